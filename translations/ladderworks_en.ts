@@ -642,941 +642,966 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>no function box with FO outputs at cell ({row}, {col})</source>
+        <translation>no function box with FO outputs at cell ({row}, {col})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
         <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
         <translation>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
         <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
         <translation>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
         <source>END ends the program and stays its last network: draw new networks above it</source>
         <translation>END ends the program and stays its last network: draw new networks above it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} would be replaced with itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also in network {other})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII format: the text opened by {quote} is never closed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII format: a repeat count must be 1 to 999, found {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII format: text after END: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII format: END is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; is not a Fatek instruction</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
         <source>{name} needs a device</source>
         <translation>{name} needs a device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; is not a Fatek device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} cannot take &apos;{text}&apos; (use {kinds})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; is out of range ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} with nothing before it: a network starts with ORG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} needs two blocks: start the second one with LD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} is set twice in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>a network has at most {limit} TR points</source>
         <translation>a network has at most {limit} TR points</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>LD TR{number} before OUT TR{number} in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} on the left rail: put ORG SHORT before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number} is not a Fatek function LadderWorks knows</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: the operand line {param} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} takes no more operands, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} is kept and drawn but not simulated: its outputs stay 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos; is not the time base of {name} ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: no function output here (FO0-FO7 after a box)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
         <translation>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
         <translation>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
         <translation>&apos;{text}&apos; is not a Fatek device: the line is skipped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
         <translation>the comments were read in code page {chosen}; they read as {others} too: check the names</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
         <translation>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>the .pdw file is cut short: its record at byte {offset} runs past the end</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>the .pdw file is damaged: the record at byte {offset} fails its checksum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>the .pdw file is damaged: the record at byte {offset} is malformed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>the .pdw file holds no program (checked up to byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>the .pdw file is damaged: its program image is wrong at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>the program ends inside an instruction at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
         <translation>{name} is kept and drawn but not simulated: the scan passes it by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
         <translation>{count} instructions are not simulated, the scan passes them by (line): {names}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
         <translation>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>{name}: operand {index} is missing</source>
         <translation>{name}: operand {index} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>step {step} is not after step {previous}: the step numbers must grow</source>
         <translation>step {step} is not after step {previous}: the step numbers must grow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="347"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="353"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="359"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>byte {offset}: the program does not end with END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>byte {offset} (step {step}): instructions after END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>byte {offset}: a text section of the .dvp project is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>byte {offset}: a device comment line is not DEVICE$&amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>the project holds no program: no compiled instruction list and an empty ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>the project was saved without compiling: its program is read from its ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="383"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>NEXT without a FOR before it</source>
         <translation>NEXT without a FOR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MC or STL without its MCR or RET after it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>MCR or RET without its MC or STL before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
         <source>FOR without its NEXT</source>
         <translation>FOR without its NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="403"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="423"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="440"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="443"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="461"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="460"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="462"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="462"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="464"/>
         <source>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</source>
         <translation>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="466"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="468"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="468"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="470"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="470"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="472"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: the text ends inside {what} (cut off?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="472"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="477"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} needs its pin {pin}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="481"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: the wiring of {part} cannot be followed ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="481"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="483"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: there is no label &apos;{label}&apos; in this block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="483"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="485"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: a {language} network is shown, not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="485"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: the block &apos;{block}&apos; it calls is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
-        <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
-        <translation>a changed S7 block cannot be written yet: save it in TIA Portal</translation>
+        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
+        <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
+        <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="501"/>
+        <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
+        <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="504"/>
+        <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
+        <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
+        <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
+        <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="509"/>
+        <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
+        <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="504"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="524"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="527"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="533"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
@@ -1642,19 +1667,19 @@
 <context>
     <name>FamilyWords</name>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="27"/>
-        <location filename="../ladderworks/gui/family_words.py" line="32"/>
-        <location filename="../ladderworks/gui/family_words.py" line="37"/>
+        <location filename="../ladderworks/gui/family_words.py" line="28"/>
+        <location filename="../ladderworks/gui/family_words.py" line="33"/>
+        <location filename="../ladderworks/gui/family_words.py" line="38"/>
         <source>e.g. {0}</source>
         <translation>e.g. {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="43"/>
+        <location filename="../ladderworks/gui/family_words.py" line="44"/>
         <source>Type the devices to watch, e.g. {0}</source>
         <translation>Type the devices to watch, e.g. {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="53"/>
+        <location filename="../ladderworks/gui/family_words.py" line="54"/>
         <source>FANUC PMC</source>
         <translation>FANUC PMC</translation>
     </message>
@@ -2007,7 +2032,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="121"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -2017,32 +2042,37 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="40"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="158"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="313"/>
+        <source>Output pins</source>
+        <translation>Output pins</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="41"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="166"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="170"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="173"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -2052,28 +2082,28 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="51"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="116"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="111"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
@@ -2083,17 +2113,17 @@
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="312"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="340"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="324"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="352"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="365"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -2214,86 +2244,91 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="113"/>
+        <source>Output pins (FO)…</source>
+        <translation>Output pins (FO)…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="122"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
         <source>Find pre&amp;vious</source>
         <translation>Find pre&amp;vious</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="138"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="143"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="145"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="146"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="157"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="156"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="159"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
@@ -2932,6 +2967,19 @@
         <location filename="../ladderworks/gui/os_errors.py" line="36"/>
         <source>system error: {0}</source>
         <translation>system error: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>OutputPinsDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/output_pins_dialog.py" line="38"/>
+        <source>Output pins</source>
+        <translation>Output pins</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/output_pins_dialog.py" line="39"/>
+        <source>The outputs {0} shows on its right side (FO0 is its first output, always shown); draw each pin&apos;s coils on its row:</source>
+        <translation>The outputs {0} shows on its right side (FO0 is its first output, always shown); draw each pin&apos;s coils on its row:</translation>
     </message>
 </context>
 <context>
@@ -4363,7 +4411,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Scenario files (*.csv);;All files (*)</translation>
     </message>
@@ -4398,77 +4446,77 @@
         <translation>{0}: {1} of {2} checks failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
         <source>Save the recorded scenario</source>
         <translation>Save the recorded scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
         <source>recorded in LadderWorks</source>
         <translation>recorded in LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
         <source>Recording inputs and forces...</source>
         <translation>Recording inputs and forces...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="243"/>
         <source>Recorded {0} changes</source>
         <translation>Recorded {0} changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="251"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="252"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>PLC scenario</source>
         <translation>PLC scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
         <source>Run scenario...</source>
         <translation>Run scenario...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Record scenario</source>
         <translation>Record scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Expected</source>
         <translation>Expected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Got</source>
         <translation>Got</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Time (ms)</source>
         <translation>Time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
@@ -4539,7 +4587,7 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="45"/>
+        <location filename="../ladderworks/gui/family_words.py" line="46"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>

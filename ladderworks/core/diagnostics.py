@@ -120,6 +120,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "an edge or comparison contact has no normally closed form"),
     "edit-no-element": QT_TRANSLATE_NOOP(
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
+    "edit-no-pins": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no function box with FO outputs at cell ({row}, {col})"),
     "family-symbols": QT_TRANSLATE_NOOP(
         "Diagnostic", "the program's {count} symbols (%@2) have no place in that family's "
         "files: the program keeps its family"),
@@ -494,7 +496,19 @@ MESSAGES: dict[str, str] = {
     "s7-tags": QT_TRANSLATE_NOOP(
         "Diagnostic", "tag table: {why}"),
     "s7-save-changed": QT_TRANSLATE_NOOP(
-        "Diagnostic", "a changed S7 block cannot be written yet: save it in TIA Portal"),
+        "Diagnostic", "this change cannot be written into the S7 block's file: make it in "
+        "TIA Portal"),
+    "s7-db-syntax": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{file}, line {line}: expected {expected}, found '{found}': the source "
+        "is not read"),
+    "s7-db-cut": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{file}, line {line}: the text ends inside {what} (cut off?): the source "
+        "is not read"),
+    "s7-save-unreadable": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the S7 block's file no longer reads (line {line}): nothing is written"),
+    "s7-save-unwritable": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{part}' cannot be written in the S7 block's file form: make this "
+        "change in TIA Portal"),
     # SimaticML XML (docs/dialects.md, SimaticML XML)
     "s7xml-too-large": QT_TRANSLATE_NOOP(
         "Diagnostic", "SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks "

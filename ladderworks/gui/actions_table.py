@@ -110,6 +110,9 @@ ACTIONS: tuple[ActionSpec, ...] = (
       enabled_when=LADDER_SHOWN),
     A("action_or", QT_TRANSLATE_NOOP("MainWindow", "OR (add parallel)"),
       "editor.edits.or_at_cursor", icon="or", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
+    A("action_output_pins", QT_TRANSLATE_NOOP("MainWindow", "Output pins (FO)…"),
+      "editor.edits.output_pins_at_cursor", menu="menu_edit", group=2,
+      enabled_when=LADDER_SHOWN),
     A("action_insert_row_before", QT_TRANSLATE_NOOP("MainWindow", "Insert row before"),
       "editor.edits.insert_row_before", icon="row_before", menu="menu_edit", group=2,
       enabled_when=LADDER_SHOWN),
@@ -160,6 +163,7 @@ ACTIONS: tuple[ActionSpec, ...] = (
 # The grid's right-click menu (None: a separator); the PLC's on-line actions follow.
 CONTEXT_MENU: tuple[str | None, ...] = (
     "action_cut", "action_copy", "action_paste", "action_delete", None,
-    "action_invert", "action_or", None, "action_insert_row_before", "action_insert_row_after",
+    "action_invert", "action_or", "action_output_pins", None, "action_insert_row_before",
+    "action_insert_row_after",
     None, "action_delete_network",
 )

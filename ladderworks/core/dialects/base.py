@@ -56,6 +56,9 @@ class Dialect:
     # a diagnostic code: Save refuses a changed program of this dialect with it (S7: writing
     # its blocks is not done yet); "" when changed networks are written by `printer`
     refuse_changes: str = ""
+    # "module:function": (program) -> the text Save writes for a changed program in its file's
+    # own form, or None when the changes are not known to it (then `refuse_changes` refuses)
+    writer: str = ""
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
     spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
     # the rows each module of core/plc/functions implements for it (plc/families.py merges them)
@@ -110,6 +113,14 @@ class Dialect:
         lines = finish(program, out, fresh, joins)
         assert isinstance(lines, list)
         return lines
+
+    def write_changed(self, program: Program) -> str | None:
+        """The text of a changed program as `writer` writes it; None when it cannot."""
+        if not self.writer:
+            return None
+        text = _function(self.writer)(program)
+        assert text is None or isinstance(text, str)
+        return text
 
     def network_lines(self, network: Network, first: bool, style: object = None) -> list[str]:
         """A new or changed network as this dialect's text (Save, format), in `style` (what

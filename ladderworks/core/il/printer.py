@@ -196,7 +196,10 @@ def print_faithful(program: Program) -> str:
     new_keys = [network.key() for network in program.networks]
     if other is not None and other.refuse_changes and (
             new_keys != source.keys or tuple(program.trailer) != source.trailer):
-        raise Refused(other.refuse_changes)
+        written = other.write_changed(program)
+        if written is None:
+            raise Refused(other.refuse_changes)
+        return written
     last_fresh = False
     for tag, i1, i2, j1, j2 in _align(source.keys, new_keys):
         if tag == "equal":

@@ -219,6 +219,8 @@ class Program:
     symbols: SymbolTable | None = None  # %@2: address <-> symbol, comments
     messages: dict[Address, Message] = field(default_factory=dict)  # %@4 by A bit
     io_modules: list[IoModule] = field(default_factory=list)  # %@5
+    # a dialect's own form of the program as read, kept for its writer (S7: saving.S7Source)
+    graph: object = None
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Program):

@@ -182,3 +182,4 @@ def adopt_origin(program: Program, origin: Program) -> None:
     program.symbols = origin.symbols
     program.messages = origin.messages
     program.io_modules = origin.io_modules
+    program.graph = origin.graph

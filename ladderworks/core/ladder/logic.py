@@ -85,9 +85,10 @@ class Rung:
     # (None: its coils hang on the branch point), coils and branches of its own (a nested MPS
     # after its block: then it has no coils), first to last (at least two)
     branches: list[Branch] = field(default_factory=list)
-    # a box's further output pins (Fatek's FO1, FO2 …): the contact reading each (`RD FO.1`)
+    # a box's further output pins (Fatek's FO1, FO2 …): the contact reading each (`RD FO.1`),
+    # the block in series after it (None: its outputs hang on the pin; `FO 1 / AND X3 / OUT Y1`)
     # and its outputs, written after the box's W1 coils
-    pins: list[tuple[Contact, list[Output]]] = field(default_factory=list)
+    pins: list[tuple[Contact, Logic | None, list[Output]]] = field(default_factory=list)
     box_cell: Cell | None = field(default=None, compare=False)
     coil_cells: list[Cell] = field(default_factory=list, compare=False)
     # the dialect whose stack rows code the branches ("" the first there is: Delta's MPS …),
@@ -225,9 +226,11 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
     elif rung.logic is not None:
         out.extend(code_logic(rung.logic, False, cells))
     write(rung.coils)
-    for contact, coils in rung.pins:
+    for contact, block, coils in rung.pins:
         out.append(_contact_instruction(contact, Combine.READ, False))
         cells.append(rung.box_cell)
+        if block is not None:
+            _continue(block, out, cells)
         write(coils)
 
     kept = [params for op, params in rung.stack_params if op is StackOp.DUP]
@@ -384,13 +387,16 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             phase = "coils"
         if rung.box is not None and phase in ("coils", "closed", "pins") \
                 and _reads_output(rung.box, ins):
-            rung.pins.append((Contact(ins.operand, False, ins.comment, ins.lead), []))
+            rung.pins.append((Contact(ins.operand, False, ins.comment, ins.lead), None, []))
             phase = "pins"
+            stack = [_PREVIOUS]
             continue
-        if phase == "pins" and not spec.is_coil:
-            raise Undrawable(name)  # a box's output pin feeds coils only
         # a dialect's edge or comparison contact
         joins = contact_combine(spec) if spec.kind is Kind.FUNCTION else None
+        if phase == "pins" and not spec.is_coil and (
+                rung.pins[-1][2] or (spec.kind is not Kind.BASIC and joins is None)
+                or spec.stack is not StackOp.NONE):
+            raise Undrawable(name)  # a pin's block comes before its coils, no box after
         if spec.kind is Kind.BASIC and spec.stack is StackOp.INVERT:
             if phase not in ("logic", "chain", "branch") or len(stack) != 1:
                 raise Undrawable(name)  # INV inside a block: not the power at its place
@@ -400,8 +406,12 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             if phase == "pins":
                 if ins.operand is None:
                     raise Undrawable(name)
-                rung.pins[-1][1].append(Coil(ins.operand, spec.negated, ins.comment, ins.lead,
-                                             spec.write, name if spec.dialect else ""))
+                contact, block, coils = rung.pins[-1]
+                if not coils:  # the block after the pin (`FO 1 / AND X3`), as a chain's
+                    block = _pin_block(stack, name)
+                    rung.pins[-1] = (contact, block, coils)
+                coils.append(Coil(ins.operand, spec.negated, ins.comment, ins.lead,
+                                  spec.write, name if spec.dialect else ""))
                 continue
             if phase == "logic":
                 if rung.box is None and len(stack) != 1:
@@ -441,7 +451,7 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
         if phase == "coils" and rung.box is None and (spec.kind is Kind.BASIC or joins):
             phase = "chain"
             stack = [_PREVIOUS]
-        if phase not in ("logic", "chain", "branch"):
+        if phase not in ("logic", "chain", "branch", "pins"):
             raise Undrawable(name)
         if joins is not None:
             _join(stack, Contact(None, False, ins.comment, ins.lead, name, ins.params), joins,
@@ -466,13 +476,27 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
         _join(stack, contact, spec.combine, spec.pushes, name)
     if rung.box is None and rung.logic is None:
         raise Undrawable("no output")
-    if phase in ("chain", "branch"):
+    if phase in ("chain", "branch") or (phase == "pins" and not rung.pins[-1][2]
+                                        and stack != [_PREVIOUS]):
         raise Undrawable("logic after the last coil")
     if any(not level.last or len(level.branches) < 2 for level in levels):
         raise Undrawable("MPS without its MPP")
     if rung.box is not None and not rung.box.spec.w1 and rung.coils:
         raise Undrawable("coils")
     return rung
+
+
+def _pin_block(stack: list[Logic], name: str) -> Logic | None:
+    """The block in series after a box's output pin: None when the pin feeds its coils."""
+    if len(stack) != 1:
+        raise Undrawable(name)
+    top = stack[0]
+    if top is _PREVIOUS:
+        return None
+    if not isinstance(top, Series) or top.items[0] is not _PREVIOUS:
+        raise Undrawable(name)  # OR with the pin: no picture
+    rest = top.items[1:]
+    return rest[0] if len(rest) == 1 else Series(rest)
 
 
 def _reads_output(box: FunctionBox, ins: Instruction) -> bool:

@@ -31,12 +31,16 @@ class ValueType(IntEnum):
     BYTE = 9
     WORD = 10
     DWORD = 11
+    LREAL = 12
+    CHAR = 13
 
 
 WIDTH: dict[ValueType, int] = {
     ValueType.BOOL: 1, ValueType.SINT: 1, ValueType.INT: 2, ValueType.DINT: 4,
     ValueType.USINT: 1, ValueType.UINT: 2, ValueType.UDINT: 4, ValueType.REAL: 4,
-    ValueType.TIME: 4, ValueType.BYTE: 1, ValueType.WORD: 2, ValueType.DWORD: 4}
+    ValueType.TIME: 4, ValueType.BYTE: 1, ValueType.WORD: 2, ValueType.DWORD: 4,
+    ValueType.LREAL: 8, ValueType.CHAR: 1}
+FLOATS = frozenset({ValueType.REAL, ValueType.LREAL})
 SIGNED = frozenset({ValueType.SINT, ValueType.INT, ValueType.DINT, ValueType.TIME})
 # names as TIA writes them (case-insensitive), and the IEC timer/counter types
 TYPE_NAMES: dict[str, ValueType] = {t.name.lower(): t for t in ValueType}
@@ -65,15 +69,29 @@ def bits_real(bits: int) -> float:
     return float(struct.unpack(">f", (bits & 0xFFFFFFFF).to_bytes(4, "big"))[0])
 
 
+def lreal_bits(value: float) -> int:
+    """An LReal's IEEE-754 double bits as an unsigned 64-bit int."""
+    return int.from_bytes(struct.pack(">d", value), "big")
+
+
+def bits_lreal(bits: int) -> float:
+    """The LReal whose IEEE-754 double bits are `bits`."""
+    return float(struct.unpack(">d", (bits & (1 << 64) - 1).to_bytes(8, "big"))[0])
+
+
 def read(memory: Memory, operand: object, vtype: ValueType) -> int | float:
     """The value of a typed parameter: a constant or the value at an address."""
     if isinstance(operand, Address):
         if operand.bit is not None:
             return memory.bit(operand)
         raw = memory.read(operand, WIDTH[vtype], signed=vtype in SIGNED)
+        if vtype is ValueType.LREAL:
+            return bits_lreal(raw)
     else:
         assert isinstance(operand, int)
         raw = operand
+        if vtype is ValueType.LREAL:  # a constant: a Real's bits (parameters are 32-bit; an
+            return bits_real(raw)  # LReal constant a Real does not hold is put in memory)
     return bits_real(raw) if vtype is ValueType.REAL else raw
 
 
@@ -96,6 +114,9 @@ def write(memory: Memory, address: object, vtype: ValueType, value: int | float)
     if vtype is ValueType.REAL:
         memory.write(address, real_bits(float(value)), 4)
         return
+    if vtype is ValueType.LREAL:
+        memory.write(address, lreal_bits(float(value)), 8)
+        return
     memory.write(address, wrap(int(value), vtype), WIDTH[vtype])
 
 
@@ -103,6 +124,8 @@ def fits(value: int | float, vtype: ValueType) -> bool:
     """True when a result is valid for its type (an integer in range, a finite Real)."""
     if vtype is ValueType.REAL:
         return math.isfinite(value) and abs(value) <= 3.4028234663852886e38
+    if vtype is ValueType.LREAL:
+        return math.isfinite(value)
     low, high = limits(vtype)
     return low <= value <= high
 

@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QApplication
 
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
-from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Diagnostic
 from ladderworks.core.dialects.functions import is_contact, placed_params
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
@@ -24,12 +24,14 @@ from ladderworks.core.ladder import (
     LadderNetwork,
     Selection,
 )
+from ladderworks.core.ladder.output_pins import set_output_pins, shown_pins
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
 from ladderworks.gui.editor.grid_view import GridView
 from ladderworks.gui.editor.ladder_model import ends_program
 from ladderworks.gui.editor.step_name import StepName, editor_step
 from ladderworks.gui.function_dialog import FunctionDialog
+from ladderworks.gui.output_pins_dialog import OutputPinsDialog
 
 translate = QCoreApplication.translate
 
@@ -75,6 +77,7 @@ class LadderEdits:
         self.open_address = open_address
         self.function_name = FUNCTIONS[0].name  # what the function tool places (the palette's)
         self.function_dialog: FunctionDialog | None = None
+        self.output_pins_dialog: OutputPinsDialog | None = None
 
     def run_edit(self, index: int, operation: Callable[[LadderNetwork], object],
                  name: StepName) -> bool:
@@ -287,6 +290,31 @@ class LadderEdits:
     def or_at_cursor(self) -> None:
         """OR on the element at the cursor (a parallel contact or coil)."""
         self.add_parallel(*self._cursor_target())
+
+    def output_pins_at_cursor(self) -> None:
+        """The output pins dialog for the box at the cursor (Fatek's FO1 … FO7); on OK the
+        box shows the checked ones (one undo step). A message when no such box is there."""
+        index, row, col = self._cursor_target()
+        networks = self.grid.networks
+        found = networks[index].element_at(row, col) if index < len(networks) else None
+        box = found[1] if found is not None else None
+        if not isinstance(box, FunctionBox) or box.output_byte() is None:
+            self.grid.message.emit(diagnostic_text(Diagnostic(
+                "edit-no-pins", {"row": row, "col": col})))
+            return
+        dialect = self.grid.model.dialect
+        name = spelling(dialect).name(box.spec) if dialect else box.name
+        dialog = OutputPinsDialog(name, shown_pins(box), self.grid)
+        self.output_pins_dialog = dialog
+
+        def done() -> None:
+            bits = dialog.bits()
+            self.run_edit(index, lambda n: set_output_pins(n, row, col, bits),
+                          editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Output pins")))
+            self.grid.setFocus()
+
+        dialog.accepted.connect(done)
+        dialog.open()
 
     def insert_row_before(self) -> None:
         """Insert an empty row before the cursor's row."""

@@ -40,4 +40,5 @@ DIALECT = Dialect(
     period_ms=10, extensions=(".s7dcl",), families=FAMILIES, byteorder="big",
     namer="ladderworks.core.dialects.s7.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.s7.printer:spelling",
-    opener="ladderworks.core.dialects.s7.opening:open_path", refuse_changes="s7-save-changed")
+    opener="ladderworks.core.dialects.s7.opening:open_path", refuse_changes="s7-save-changed",
+    writer="ladderworks.core.dialects.s7.saving:write_changed")

@@ -3,9 +3,11 @@ SWITCH) of an S7 network, lowered for `lowering.BlockLowering` (through `lowerer
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.s7.graph import Part
+from ladderworks.core.dialects.s7.graph import Operand, OperandKind, Part
+from ladderworks.core.dialects.s7.layout import string_value
 from ladderworks.core.dialects.s7.lowerer import BlockLowering
 from ladderworks.core.dialects.s7.stack import Expr, PinGraph
+from ladderworks.core.dialects.s7.starts import STRING_TYPE, string_moves
 from ladderworks.core.il.program import Instruction, LabelRef, ParamValue
 from ladderworks.core.plc import typed
 
@@ -25,6 +27,8 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
         target = lowering.place(index, part, operand).address
         code = [Instruction("S7." + name.upper(), None, (int(vtype), target), line=line)]
         return lowering.statement(part, [power], code, lowering.keep(graph, part))
+    if name == "Move" and _to_string(lowering, graph, part):
+        return _string_move(lowering, index, graph, part, power)
     if name == "Move":
         vtype = lowering.vtype(index, graph, part, ("in", "out1"))
         source = lowering.value(index, part, graph.operand_in.get((part.uid, "in")), vtype, "in")
@@ -63,6 +67,38 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                                            lowering.place(index, part, outs[0]).address),
                         line=line)]
     return lowering.statement(part, [power], code, lowering.keep(graph, part))
+
+def _outputs(graph: PinGraph, part: Part) -> list[Operand]:
+    return [operand for (uid, pin), targets in graph.operand_out.items()
+            if uid == part.uid and pin.startswith("out") for operand in targets]
+
+
+def _to_string(lowering: BlockLowering, graph: PinGraph, part: Part) -> bool:
+    """Whether a MOVE writes a String/WString (its outputs' declared type)."""
+    for operand in _outputs(graph, part):
+        place = lowering.layout.resolve(lowering.block, operand, "", lowering.scope)
+        if place is not None and STRING_TYPE.match(place.type_name.strip()):
+            return True
+    return False
+
+
+def _string_move(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
+                 power: Expr) -> Expr | None:
+    """MOVE of a string constant to Strings: the actual length and the characters (cut at each
+    target's max length) written while EN has power; a String variable's MOVE is not
+    simulated (s7-type)."""
+    source = graph.operand_in.get((part.uid, "in"))
+    chars = string_value(source.text) if source is not None and \
+        source.kind is OperandKind.CONSTANT else None
+    if chars is None:
+        raise lowering.fail(index, part, "s7-type", part=part.name, type="String")
+    code: list[Instruction] = []
+    for operand in _outputs(graph, part):
+        place = lowering.place(index, part, operand)
+        code += [Instruction(i.name, None, i.params, line=part.line)
+                 for i in string_moves(place, chars)[1:]]  # the max length stays
+    return lowering.statement(part, [power], code, lowering.keep(graph, part))
+
 
 def jump_table(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                power: Expr) -> None:

@@ -153,13 +153,14 @@ SECTIONS: tuple[str, ...] = ("Input", "Output", "InOut", "Static", "Temp", "Cons
 
 @dataclass(slots=True)
 class Block:
-    """One program block: OB, FC, FB (or GlobalDB/InstanceDB without networks).
+    """One program block: OB, FC, FB (or GlobalDB/InstanceDB without networks, or a Type: a
+    PLC data type whose members are its Static section).
 
     `number` is 0 when the export does not say (an SD `.s7dcl` drops OB numbers).
     `sections` maps a section name of SECTIONS to its members in order. `instance_of`: an
     instance DB's FB name."""
 
-    kind: str  # "OB", "FC", "FB", "GlobalDB", "InstanceDB"
+    kind: str  # "OB", "FC", "FB", "GlobalDB", "InstanceDB", "Type"
     name: str
     number: int = 0
     sections: dict[str, list[Member]] = field(default_factory=dict)
@@ -169,6 +170,9 @@ class Block:
     language: str = "LAD"
     instance_of: str = ""
     return_type: str = "Void"
+    # a DB's actual start values (a `.db` source's BEGIN section): member path as written,
+    # lower case (`("data", "counts[2]")`) → the value's text
+    starts: dict[tuple[str, ...], str] = field(default_factory=dict)
 
     def members(self, section: str) -> list[Member]:
         """The members of one section ([] when absent)."""

@@ -18,10 +18,10 @@ from ladderworks.core.dialects.s7 import boxes, calls
 from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part, S7Network
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
 from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinGraph, emit_expr
+from ladderworks.core.dialects.s7.starts import lreal_constant, start_values
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ParamValue
 from ladderworks.core.plc import typed
 
-FIRST_SCAN = Address(Area.R, 1, 0)  # %M1.0, set by the dialect's relays in the first scan
 SCRATCH_FIRST, SCRATCH_LAST = 8192, 8999  # R bytes LadderWorks keeps for a network's links
 PURE = {"Eq": "S7.EQ", "Ne": "S7.NE", "Gt": "S7.GT", "Lt": "S7.LT", "Ge": "S7.GE", "Le": "S7.LE",
         "InRange": "S7.IN_RANGE", "OutRange": "S7.OUT_RANGE", "Ok": "S7.OK",
@@ -304,7 +304,9 @@ class BlockLowering:
         if operand is None:
             raise self.fail(index, part, "s7-pin-missing", part=part.name, pin=pin.upper())
         if operand.kind is OperandKind.CONSTANT:
-            found = constant_value(operand.text, vtype)
+            found: ParamValue | None = constant_value(operand.text, vtype)
+            if found is None and vtype is typed.ValueType.LREAL:
+                found = lreal_constant(self.layout, operand.text)
             if found is None:
                 raise self.fail(index, part, "s7-operand-unknown", text=operand.text)
             return found
@@ -455,23 +457,6 @@ class BlockLowering:
         if SCRATCH_FIRST + byte > SCRATCH_LAST:
             raise self.fail(index, part, "s7-wire", part=part.name, why="too many branches")
         return Address(Area.R, SCRATCH_FIRST + byte, bit)
-
-
-def start_values(layout: Layout) -> Network | None:
-    """The start values of the members laid out (`Count : Int := 3;`), written in the first
-    scan after RUN (%M1.0, FirstScan): S7 initialises DBs and instances at start-up."""
-    code: list[Instruction] = []
-    for key, member in layout.members.items():
-        place = layout.places.get(key)
-        vtype = place.vtype if place is not None else None
-        if not member.start or place is None or vtype is None:
-            continue
-        value = constant_value(member.start, vtype)
-        if value is not None:
-            code.append(Instruction("S7.MOVE", None, (int(vtype), value, place.address)))
-    if not code:
-        return None
-    return Network([Instruction("RD", FIRST_SCAN), *code], ["Start values"])
 
 
 def lower_block(block: Block, layout: Layout) -> tuple[list[Network], list[Diagnostic]]:

@@ -1,6 +1,7 @@
 """S7 programs as text: the S7 spelling of the engine's networks (display, `format`). An unchanged
-block is saved byte for byte by the faithful save; a changed one cannot be written as SIMATIC
-SD yet, so Save refuses it (`Dialect.refuse_changes`)."""
+block is saved byte for byte by the faithful save; a changed one is written as SIMATIC SD or
+SimaticML by saving.py (`Dialect.writer`) when its graph holds the change, else Save refuses
+it (`Dialect.refuse_changes`)."""
 
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from ladderworks.core.instructions import InstructionSpec
 def network_lines(network: Network, first: bool) -> list[str]:
     """An engine network as LadderWorks' listing in S7 spelling, each line a `//` comment (the
     CLI's `format` and `mnemonic`): not SIMATIC SD. Save never writes these: a changed S7
-    program is refused first (`Dialect.refuse_changes`, docs/dialects.md)."""
+    program is written by saving.py or refused first (docs/dialects.md)."""
     lines = [f"// {comment}" for comment in network.comments]
     lines += [f"//   {instruction_text(instruction)}" for instruction in network.instructions]
     return lines

@@ -2,7 +2,9 @@
 blocks and PLC tag tables; the entry block (the OB, else the first block) is lowered.
 
 An unchanged program saves byte for byte (FileSource: the entry block's file, one span); a
-changed S7 program is refused at Save (`printer.network_lines`): writing SD is not done yet.
+changed one is written by saving.py when its change is known as a change of its graph
+(`Program.graph`), else refused (`Dialect.refuse_changes`). `.db`/`.udt` sources beside the
+blocks are read with them.
 """
 
 from __future__ import annotations
@@ -21,15 +23,16 @@ from ladderworks.core.dialects.s7.layout import (
     size_of,
 )
 from ladderworks.core.dialects.s7.lowering import lower_block
-from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
+from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd, parse_sources
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
 from ladderworks.core.il.program import FileSource, Network, Program
-from ladderworks.core.il.textform import TextForm, decode_lines
+from ladderworks.core.il.textform import TextForm, decode_lines, encode_text
 from ladderworks.core.symbols import Symbol, SymbolTable
 
 NAME = "s7"
 SD_SUFFIXES = (".s7dcl",)
+SOURCE_SUFFIXES = (".db", ".udt")  # TIA's "Generate source from blocks": global DBs, types
 MAX_BYTES = 64 * 1024 * 1024  # a file larger than this is refused, not read
 
 
@@ -134,6 +137,15 @@ def _source(program: Program, form: TextForm, lines: list[str], ends: list[str])
         program.source.trailer_span = (0, len(lines))
 
 
+def attach(program: Program, graph: S7Program, data: bytes, form: str) -> None:
+    """Keep what Save needs to write a changed entry block in its own form (saving.py)."""
+    from ladderworks.core.dialects.s7.saving import S7Source
+
+    code = [b for b in graph.blocks if b.kind in ("OB", "FC", "FB")]
+    if code:
+        program.graph = S7Source.of(data, form, graph, code[0])
+
+
 def _parse(text: str, diagnostics: list[Diagnostic]) -> Parsed | None:
     if len(text) > MAX_BYTES:
         diagnostics.append(Diagnostic("s7-too-large", {"size": len(text) >> 20,
@@ -151,8 +163,10 @@ def read(text: str, form: TextForm, lines: list[str],
     """One SD block's text (no companion files) as a Program and its diagnostics."""
     diagnostics: list[Diagnostic] = []
     parsed = _parse(text, diagnostics)
-    program, _graph, _layout = build([parsed] if parsed else [], [], {}, diagnostics)
+    program, graph, _layout = build([parsed] if parsed else [], [], {}, diagnostics)
     _source(program, form, lines, ends)
+    if parsed is not None:
+        attach(program, graph, encode_text(text, form), "sd")
     return program, diagnostics
 
 
@@ -165,6 +179,23 @@ def _read_text(path: Path, diagnostics: list[Diagnostic]) -> str | None:
         return path.read_bytes().decode("utf-8-sig", "replace")
     except OSError:
         return None
+
+
+def read_sources(path: Path, diagnostics: list[Diagnostic]) -> list[tuple[Path, Parsed]]:
+    """The blocks of a `.db`/`.udt` source beside the program; a source that does not read is
+    left out with a warning naming the file and its line."""
+    text = _read_text(path, diagnostics)
+    if text is None:
+        return []
+    try:
+        return [(path, parsed) for parsed in parse_sources(text)]
+    except ParseError as error:
+        inner = error.diagnostic
+        args: dict[str, object] = {"file": path.name, "line": inner.line}
+        code = "s7-db-cut" if inner.code == "s7-cut" else "s7-db-syntax"
+        args.update(inner.args)
+        diagnostics.append(Diagnostic(code, args, 0, 0, Severity.WARNING))
+        return []
 
 
 def companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
@@ -187,6 +218,8 @@ def companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
                 tags += found
                 diagnostics += [Diagnostic(d.code, d.args, d.line, d.column, Severity.WARNING)
                                 for d in problems]
+        elif suffix in SOURCE_SUFFIXES:
+            blocks += read_sources(path, diagnostics)
         elif suffix in SD_SUFFIXES and path != entry:
             text = _read_text(path, diagnostics)
             if text is not None:
@@ -219,7 +252,9 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     text, form, problems, (lines, ends) = decode_lines(raw)
     diagnostics += problems
     parsed = _parse(text, diagnostics)
-    program, _graph, _layout = build(([parsed] if parsed else []) + blocks, tags, texts,
-                                     diagnostics)
+    program, graph, _layout = build(([parsed] if parsed else []) + blocks, tags, texts,
+                                    diagnostics)
     _source(program, form, lines, ends)
+    if parsed is not None:
+        attach(program, graph, raw, "sd")
     return program, diagnostics, form.encoding

@@ -16,6 +16,7 @@ from ladderworks.core.instructions import (
     ParamAccess,
     ParamKind,
 )
+from ladderworks.core.plc import typed
 
 PREFIX = "S7."
 NAME = "s7"
@@ -26,7 +27,7 @@ COUNTER_BYTES = 12  # IEC_COUNTER as LadderWorks lays it out: CV, PV, flags
 
 
 def _type() -> Param:
-    return Param("type", ParamKind.NUMBER, 0, 11)
+    return Param("type", ParamKind.NUMBER, 0, max(typed.ValueType))
 
 
 def _value(name: str) -> Param:
@@ -141,7 +142,8 @@ ROWS: tuple[InstructionSpec, ...] = (
          params=(_type(), _out("IN/OUT", ParamAccess.READ_WRITE)),
          operation=Operation.DECREMENT),
     _row("CONVERT", 57, "Convert (CONVERT)", "DÖNÜŞTÜR (CONVERT)",
-         params=(_type(), Param("to", ParamKind.NUMBER, 0, 11), _value("IN"), _out("OUT"))),
+         params=(_type(), Param("to", ParamKind.NUMBER, 0, max(typed.ValueType)), _value("IN"),
+                 _out("OUT"))),
     _row("JMP", 60, "Jump if 1 (JMP)", "ATLA (JMP)", params=_LABEL, flow=Flow.LABEL_JUMP),
     _row("LABEL", 61, "Jump label (LABEL)", "ETİKET", inputs=(), params=_LABEL,
          flow=Flow.LABEL),

@@ -6,7 +6,9 @@ Description" (entry 109994073) as quoted in them: a block pragma, `ORGANIZATION_
 a pragma `{ S7_Language := "LAD"; S7_NetworkTitle := "MLC_x" }`, `NETWORK`, `RUNG wire#powerrail
 … END_RUNG [wire#w1]`, `END_NETWORK`. Elements of a rung are in series; `wire#wN` names the
 point where it stands; a rung ending `END_RUNG wire#wN` joins its power there (an OR), a rung
-starting `RUNG wire#wN` branches from it. docs/dialects.md, "SIMATIC SD".
+starting `RUNG wire#wN` branches from it. A global DB's or a type's generated source (`.db`,
+`.udt`: `STRUCT … END_STRUCT;`, `BEGIN` start values, several blocks a file) is read by
+`parse_sources` (db_source.py). docs/dialects.md, "SIMATIC SD", "S7-1200: global DB sources".
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.s7.db_source import begin_values
 from ladderworks.core.dialects.s7.graph import (
     Block,
     End,
@@ -37,7 +40,7 @@ from ladderworks.core.dialects.s7.sd_rungs import (
 )
 
 _BLOCKS = {"ORGANIZATION_BLOCK": "OB", "FUNCTION": "FC", "FUNCTION_BLOCK": "FB",
-           "DATA_BLOCK": "GlobalDB"}
+           "DATA_BLOCK": "GlobalDB", "TYPE": "Type"}
 _SECTIONS = {"VAR_INPUT": "Input", "VAR_OUTPUT": "Output", "VAR_IN_OUT": "InOut",
              "VAR": "Static", "VAR_STAT": "Static", "VAR_TEMP": "Temp"}
 class ParseError(Exception):
@@ -100,7 +103,7 @@ class _Parser:
         while self.tok.kind == "pragma":
             attributes.update(pragma_items(self.next().text))
         if not (self.tok.kind == "word" and self.tok.text.upper() in _BLOCKS):
-            raise self.fail("ORGANIZATION_BLOCK, FUNCTION, FUNCTION_BLOCK or DATA_BLOCK")
+            raise self.fail("ORGANIZATION_BLOCK, FUNCTION, FUNCTION_BLOCK, DATA_BLOCK or TYPE")
         keyword = self.next().text.upper()
         name_tok = self.next()
         if name_tok.kind not in ("name", "word"):
@@ -144,12 +147,18 @@ class _Parser:
                     self.next()
             elif self.word("NON_RETAIN", "RETAIN"):
                 self.next()
-            elif self.word("BEGIN"):  # a DB's start values: kept in the file, not read
+            elif self.word("STRUCT") and block.kind in ("GlobalDB", "Type"):  # a `.db` source
                 self.next()
-                while not self.word(end):
-                    if self.tok.kind == "end":
-                        raise self.fail(end, f"the block {block.name}")
+                members = self.members("STRUCT", "END_STRUCT")
+                self.next()
+                if self.op(";"):
                     self.next()
+                block.sections.setdefault("Static", []).extend(members)
+            elif block.kind == "GlobalDB" and tok.kind == "name":  # `"FB"` on its own line
+                block.kind, block.instance_of = "InstanceDB", _unquote(self.next().text)
+            elif self.word("BEGIN"):  # a DB's start values (`Count := 3;`)
+                self.next()
+                begin_values(self, block, end)
             else:
                 raise self.fail(f"VAR_…, NETWORK or {end}")
         return parsed
@@ -158,11 +167,12 @@ class _Parser:
         """A member's type as written up to `;` or `:=` (Struct handled by the caller)."""
         parts: list[str] = []
         depth = 0
-        while not (depth == 0 and (self.op(";", ":=") or self.tok.kind == "end")):
+        while not (depth == 0 and self.op(";", ":=")) and self.tok.kind != "end":
             tok = self.next()
             depth += {"[": 1, "]": -1}.get(tok.text, 0)
             parts.append(tok.text)
-            if self.word("END_VAR") or self.tok.kind == "pragma":
+            if self.word("END_VAR") or self.tok.kind == "pragma" or (
+                    tok.text.upper() == "OF" and self.word("STRUCT")):  # Array[…] of Struct
                 break
         if self.tok.kind == "end":
             raise self.fail("';'", inside)
@@ -184,6 +194,8 @@ class _Parser:
                 raise ParseError(Diagnostic("s7-syntax", {"expected": "a member's name",
                                                           "found": name_tok.text},
                                             name_tok.line, name_tok.column))
+            while self.tok.kind == "pragma":  # `Timer {InstructionName := 'TON_TIME'} : …`
+                self.next()
             self.expect_op(":", inside)
             if self.word("STRUCT"):
                 self.next()
@@ -192,6 +204,12 @@ class _Parser:
                 member = Member(_unquote(name_tok.text), "Struct", members=tuple(inner))
             else:
                 member = Member(_unquote(name_tok.text), self.type_text(inside))
+                if self.word("STRUCT"):  # Array[…] of Struct … END_STRUCT
+                    self.next()
+                    inner = self.members(inside, "END_STRUCT")
+                    self.next()
+                    member = Member(member.name, member.type_name + " Struct",
+                                    members=tuple(inner))
             if self.op(":="):
                 self.next()
                 start = self.type_text(inside)
@@ -399,6 +417,7 @@ class _Parser:
             path = [self.next()]
             while self.op(".") or self.op("["):
                 if self.op("["):
+                    self.next()
                     depth_text = ""
                     while not self.op("]"):
                         if self.tok.kind == "end":
@@ -440,3 +459,17 @@ def parse_sd(text: str) -> Parsed:
     parser = _Parser(toks, text.split("\n"))
     parsed = parser.block()
     return parsed
+
+
+def parse_sources(text: str) -> list[Parsed]:
+    """Every block of a source text (a `.db` file may hold several, and TYPE blocks before
+    them); ParseError at the first that cannot be read."""
+    try:
+        toks = tokens(text)
+    except LexError as error:
+        raise ParseError(error.diagnostic) from None
+    parser = _Parser(toks, text.split("\n"))
+    found = [parser.block()]
+    while parser.tok.kind != "end":
+        found.append(parser.block())
+    return found

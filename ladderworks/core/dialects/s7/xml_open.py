@@ -11,7 +11,7 @@ from pathlib import Path
 
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7 import reader
-from ladderworks.core.dialects.s7.graph import Block, Tag
+from ladderworks.core.dialects.s7.graph import Block, S7Program, Tag
 from ladderworks.core.dialects.s7.sd_parser import Parsed
 from ladderworks.core.dialects.s7.texts import read_texts
 from ladderworks.core.dialects.s7.xml_reader import (
@@ -22,7 +22,7 @@ from ladderworks.core.dialects.s7.xml_reader import (
 )
 from ladderworks.core.dialects.s7.xml_safe import MAX_BYTES
 from ladderworks.core.il.program import Program
-from ladderworks.core.il.textform import TextForm, decode_lines
+from ladderworks.core.il.textform import TextForm, decode_lines, encode_text
 
 CODE = ("OB", "FC", "FB")
 
@@ -88,6 +88,8 @@ def _companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic],
         elif suffix == ".s7res":
             text = path.read_bytes().decode("utf-8-sig", "replace")
             texts.update(read_texts(text))
+        elif suffix in reader.SOURCE_SUFFIXES:
+            sd += [parsed for _path, parsed in reader.read_sources(path, diagnostics)]
         elif suffix in reader.SD_SUFFIXES:
             parsed = reader._parse(path.read_bytes().decode("utf-8-sig", "replace"), [])
             if parsed is not None:
@@ -100,14 +102,17 @@ def read(text: str, form: TextForm, lines: list[str],
     """One SimaticML document's text (no companion files) as a Program."""
     found = read_document(text)
     diagnostics = list(found.diagnostics)
-    program = _build(found.blocks, [], found.tags, {}, diagnostics, None, found.instances)
+    program, graph = _build(found.blocks, [], found.tags, {}, diagnostics, None,
+                            found.instances)
     reader._source(program, form, lines, ends)
+    _attach(program, graph, found, encode_text(text, form))
     return program, diagnostics
 
 
 def _build(entry_blocks: list[Block], others: list[Block], tags: list[Tag],
            texts: dict[str, dict[str, str]], diagnostics: list[Diagnostic],
-           sd: list[Parsed] | None = None, instances: dict[str, str] | None = None) -> Program:
+           sd: list[Parsed] | None = None, instances: dict[str, str] | None = None
+           ) -> tuple[Program, S7Program]:
     every = entry_blocks + others + [p.block for p in sd or []]
     names = {b.name.lower() for b in every}
     for db, fb in (instances or {}).items():  # an FB call's instance DB not exported with it
@@ -119,8 +124,8 @@ def _build(entry_blocks: list[Block], others: list[Block], tags: list[Tag],
     code = [b for b in entry_blocks if b.kind in CODE]
     rest = [b for b in entry_blocks if b.kind not in CODE] + others
     parsed = [Parsed(b) for b in code + rest] + list(sd or [])
-    program, _graph, _layout = reader.build(parsed, tags, texts, diagnostics)
-    return program
+    program, graph, _layout = reader.build(parsed, tags, texts, diagnostics)
+    return program, graph
 
 
 def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic], str]:
@@ -161,9 +166,18 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     del text
     diagnostics += problems
     instances = {**extra, **found.instances}
-    program = _build(found.blocks, blocks, found.tags + tags, texts, diagnostics, sd, instances)
+    program, graph = _build(found.blocks, blocks, found.tags + tags, texts, diagnostics, sd,
+                            instances)
     reader._source(program, form, lines, ends)
+    _attach(program, graph, found, raw)
     return program, diagnostics, form.encoding
+
+
+def _attach(program: Program, graph: S7Program, found: XmlRead, data: bytes) -> None:
+    """Keep the document's bytes and graph for a Save of a changed entry block (saving.py),
+    when the entry block is this document's."""
+    if any(b.kind in CODE for b in found.blocks):
+        reader.attach(program, graph, data, "xml")
 
 
 def _names(path: Path) -> set[str]:

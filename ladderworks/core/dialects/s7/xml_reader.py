@@ -52,6 +52,24 @@ class XmlRead:
     instances: dict[str, str] = field(default_factory=dict)  # instance DB → its FB (calls)
 
 
+def _subelements(node: Element) -> str:
+    """An array member's `<Subelement Path="i"><StartValue>` as an initializer `[a, , b]`
+    (from the array's low bound; "" when it has none, or a path of several dimensions)."""
+    found: dict[int, str] = {}
+    for sub in node.all("Subelement"):
+        value = sub.find("StartValue")
+        path = sub.attrs.get("Path", "")
+        if value is not None and re.fullmatch(r"-?\d{1,6}", path):
+            found[int(path)] = value.text.strip()
+    bounds = re.match(r"(?i)^array\s*\[\s*(-?\d+)", node.attrs.get("Datatype", "").strip())
+    if not found or bounds is None:
+        return ""
+    low = int(bounds.group(1))
+    if min(found) < low or max(found) - low > 100_000:
+        return ""
+    return "[" + ", ".join(found.get(i, "") for i in range(low, max(found) + 1)) + "]"
+
+
 def is_simaticml(text: str) -> bool:
     """True for a SimaticML document with blocks (a tag table alone is not a program)."""
     head = text[:4000]
@@ -166,8 +184,10 @@ class _Reader:
         sections = node.child("Sections")  # an FB/UDT-typed member's expanded interface
         if sections is not None and not inner:
             inner = tuple(self.member(m) for s in sections.all("Section") for m in s.all("Member"))
+        start_text = start.text.strip() if start is not None else ""
+        elements = _subelements(node)
         return Member(node.attrs.get("Name", ""), node.attrs.get("Datatype", ""),
-                      start.text.strip() if start is not None else "", text, inner)
+                      elements or start_text, text, inner)
 
     def check_ns(self, node: Element, kind: str, network: int, block: str) -> bool:
         """False (with an error) for a foreign namespace; a newer version: a warning."""

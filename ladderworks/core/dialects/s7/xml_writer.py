@@ -9,7 +9,15 @@ from __future__ import annotations
 
 from xml.sax.saxutils import escape, quoteattr
 
-from ladderworks.core.dialects.s7.graph import Block, End, Member, Operand, OperandKind, Part
+from ladderworks.core.dialects.s7.graph import (
+    Block,
+    End,
+    Member,
+    Operand,
+    OperandKind,
+    Part,
+    S7Network,
+)
 from ladderworks.core.dialects.s7.xml_forms import OPENNESS, address_attrs, pin_out
 
 ENGINEERING = {0: "V14", 1: "V15", 2: "V15.1", 3: "V16", 4: "V17", 5: "V19"}
@@ -183,6 +191,30 @@ def _flgnet(network_parts: list[Part], wires: list, version: int, pad: str,
             lines += _part(part, uids[part.uid], ids, pad + "    ", blocks)
     return [*lines, f"{pad}  </Parts>", f"{pad}  <Wires>", *wire_lines, f"{pad}  </Wires>",
             f"{pad}</FlgNet>"]
+
+
+def flgnet_lines(network: S7Network, version: int = 5,
+                 others: list[Block] | None = None) -> list[str]:
+    """One LAD network's `FlgNet` element as lines (no indentation, as TIA writes it)."""
+    blocks = {b.name.lower(): b for b in others or []}
+    return _flgnet(network.parts, network.wires, version, "", blocks)
+
+
+def unit_lines(network: S7Network, version: int, first_id: int,
+               others: list[Block] | None = None) -> tuple[list[str], int]:
+    """A whole `SW.Blocks.CompileUnit` of a new network (its texts in en-US), unindented, its
+    document IDs from `first_id` on; and the next free ID."""
+    ids = _Ids()
+    ids.next = first_id
+    lines = [f'<SW.Blocks.CompileUnit ID="{ids.take()}" CompositionName="CompileUnits">',
+             "  <AttributeList>", "    <NetworkSource>"]
+    lines += ["      " + line for line in flgnet_lines(network, version, others)]
+    lines += ["    </NetworkSource>",
+              f"    <ProgrammingLanguage>{escape(network.language)}</ProgrammingLanguage>",
+              "  </AttributeList>", "  <ObjectList>"]
+    for kind in ("comment", "title"):
+        lines += _text_xml(ids, kind.capitalize(), {"en-US": getattr(network, kind)}, "    ")
+    return [*lines, "  </ObjectList>", "</SW.Blocks.CompileUnit>"], ids.next
 
 
 def write_block(block: Block, version: int = 5, texts: Texts | None = None,

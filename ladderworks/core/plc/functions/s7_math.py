@@ -33,9 +33,9 @@ def _arithmetic(ctx: FunctionContext, name: str, inputs: tuple[bool, ...],
     vtype = typed.ValueType(params[0])
     a, b = typed.read(ctx.memory, params[1], vtype), typed.read(ctx.memory, params[2], vtype)
     if name == "S7.DIV":
-        if b == 0 and vtype is not typed.ValueType.REAL:
+        if b == 0 and vtype not in typed.FLOATS:
             return False
-        if vtype is typed.ValueType.REAL:
+        if vtype in typed.FLOATS:
             result: int | float = a / b if b else math.copysign(math.inf, a) if a else math.nan
         else:
             result = int(a / b) if abs(a) < 2**52 else (abs(int(a)) // abs(int(b))) * (
@@ -99,7 +99,7 @@ def convert(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
         return False
     source, target = typed.ValueType(params[0]), typed.ValueType(params[1])
     value = typed.read(ctx.memory, params[2], source)
-    if target is not typed.ValueType.REAL:
+    if target not in typed.FLOATS:
         if not math.isfinite(value):
             return False
         value = round(value)

@@ -111,6 +111,27 @@ def test_rotations(monitored: bool) -> None:
 
 
 @MODES
+def test_shfl_and_rotr_as_the_manuals_examples_and_n_out_of_range(monitored: bool) -> None:
+    """FBs manual p. 7-26: R0 0x32F0 shifted left 4 with INB 1 is 0x2F0F, OTB 1; p. 7-29:
+    0xF0AA rotated right 8 is 0xAAF0, OTB 1. N outside 1-16 sets ERR (FO1), nothing moved."""
+    engine = plc("ORG X0\nLD X1\nFUN 51P SHFL\n D : R0\n N : R9\nFO 0\nOUT Y0\nFO 1\nOUT Y1\n"
+                 "ORG X0\nFUN 54P ROTR\n D : R2\n N : 8\nFO 0\nOUT Y2\nFO 1\nOUT Y3\n",
+                 monitored)
+    put(engine, "R0", 0x32F0)
+    put(engine, "R2", 0xF0AA - 0x10000)
+    put(engine, "R9", 4)
+    scan(engine, X0=1, X1=1)
+    assert get(engine, "R0") & 0xFFFF == 0x2F0F and (get(engine, "Y0"), get(engine, "Y1")) == (1, 0)
+    assert get(engine, "R2") & 0xFFFF == 0xAAF0 and (get(engine, "Y2"), get(engine, "Y3")) == (1, 0)
+    for n in (0, 17):
+        put(engine, "R9", n)
+        scan(engine, X0=0)
+        scan(engine, X0=1)
+        assert get(engine, "R0") & 0xFFFF == 0x2F0F
+        assert (get(engine, "Y0"), get(engine, "Y1")) == (0, 1)
+
+
+@MODES
 def test_pulse_forms_skip_scans_exactly(monitored: bool) -> None:
     """The P forms hold EN's last state: a skipping engine equals the every-scan one (random
     X0-X15, R0-R3 from outside)."""
