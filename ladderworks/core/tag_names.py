@@ -193,23 +193,11 @@ def network_titles(program: Program) -> list[str]:
     return titles
 
 
-_TIME_UNITS = (("d", 86_400_000), ("h", 3_600_000), ("m", 60_000), ("s", 1000), ("ms", 1))
-
-
-def time_text(ms: int) -> str:
-    """A Time's milliseconds as TIA writes a constant: `T#5s`, `T#1m30s`, `T#-2s500ms`."""
-    sign, rest = ("-", -ms) if ms < 0 else ("", ms)
-    parts = []
-    for unit, size in _TIME_UNITS:
-        count, rest = divmod(rest, size)
-        if count:
-            parts.append(f"{count}{unit}")
-    return f"T#{sign}{''.join(parts) or '0ms'}"
-
-
 def typed_text(raw: int, type_name: str, width: int) -> str | None:
-    """A raw value of `width` bytes as its type shows it (a Time `T#5s`, a Real `21.5`, an
-    Int signed); None for a type shown as a plain number (a Byte, a Word, a bit)."""
+    """A raw value of `width` bytes as its type shows it, as TIA's watch table does (a Time
+    `T#5S`, a Real `21.5`, an Int signed); None for a type shown as a plain number (a Byte, a
+    Word, a bit)."""
+    from ladderworks.core.dialects.s7.values import time_text
     from ladderworks.core.plc import typed
 
     low = type_name.lower()
@@ -218,7 +206,7 @@ def typed_text(raw: int, type_name: str, width: int) -> str | None:
     if low == "time" and width == 4:
         return time_text(signed)
     if low == "real" and width == 4:
-        return f"{typed.bits_real(raw):g}"
+        return f"{typed.bits_real(raw):.7g}"  # as the watch table (values.show)
     if low in ("sint", "int", "dint"):
         return str(signed)
     return None

@@ -8,6 +8,7 @@ import pytest
 from ladderworks.cli import main
 from ladderworks.core.address import Address, AddressError, Area
 from ladderworks.core.compiler import compile_program
+from ladderworks.core.dialects.s7.values import time_text
 from ladderworks.core.il import parse_file
 from ladderworks.core.plc.scenario import parse_scenario, run_scenario
 from ladderworks.core.plc.session import PlcRun
@@ -16,7 +17,6 @@ from ladderworks.core.tag_names import (
     TagNames,
     network_titles,
     split_names,
-    time_text,
     typed_text,
     typed_value,
 )
@@ -79,10 +79,10 @@ def test_names_typed_on_one_line() -> None:
 
 def test_values_as_their_types_write_them() -> None:
     assert [time_text(ms) for ms in (0, 5000, 90_000, -2500, 86_400_001)] == [
-        "T#0ms", "T#5s", "T#1m30s", "T#-2s500ms", "T#1d1ms"]
+        "T#0MS", "T#5S", "T#1M_30S", "T#-2S_500MS", "T#1D_1MS"]  # as TIA's watch table
     assert typed_text(real_bits(21.5), "Real", 4) == "21.5"
     assert typed_text(0xFFFF, "Int", 2) == "-1"
-    assert typed_text(5000, "Time", 4) == "T#5s"
+    assert typed_text(5000, "Time", 4) == "T#5S"
     assert typed_text(7, "Word", 2) is None
     assert typed_value("T#1m30s", "Time", 4) == 90_000
     assert typed_value("-1.5", "Real", 4) == real_bits(-1.5)
@@ -115,10 +115,10 @@ def test_a_scenario_checks_times_by_tag_with_comparisons() -> None:
         'PMC SIGNAL DATA\nSET,0,"Start",1\nWAITFOR,6000,"IEC_Timer_0_DB".ET,>=T#5s\n'
         'EXPECT,0,"IEC_Timer_0_DB".ET,<T#5s\nEXPECT,0,"Lamba 2",1\n'
         'EXPECT,5000,"Geçen Süre",T#10s\nEXPECT,0,"IEC_Timer_0_DB".Q,<>0\n')
-    assert messages[0] == 't.csv:3: "IEC_Timer_0_DB".ET>=T#5s at 5000 ms'
-    assert messages[1] == 't.csv:4: expected "IEC_Timer_0_DB".ET<T#5s, got T#5s at 5000 ms'
+    assert messages[0] == 't.csv:3: "IEC_Timer_0_DB".ET>=T#5S at 5000 ms'
+    assert messages[1] == 't.csv:4: expected "IEC_Timer_0_DB".ET<T#5S, got T#5S at 5000 ms'
     assert messages[2:] == ['t.csv:5: "Lamba 2"=1 at 5000 ms',
-                            't.csv:6: "Geçen Süre"=T#10s at 10000 ms',
+                            't.csv:6: "Geçen Süre"=T#10S at 10000 ms',
                             't.csv:7: "IEC_Timer_0_DB".Q<>0 at 10000 ms']
 
 

@@ -81,7 +81,7 @@ def test_the_time_chart_samples_tags_with_their_types(s7_docks: PlcDocks) -> Non
     chart.stop()
     chart.set_cursor(chart.record.times[-1])  # the last sample: 5 s after "Start"
     text = chart.cursor_label.text()
-    assert '"Calisma_DB".ET = T#5s' in text and '"Sıcaklık" = 21.5' in text
+    assert '"Calisma_DB".ET = T#5S' in text and '"Sıcaklık" = 21.5' in text
     assert '"Hazır" = 1' in text and '"Start" = 1' in text
     assert chart.lane_name(chart.record.signals[4]) == '%MW10 "Hedef Hız"'
 
@@ -191,5 +191,5 @@ def test_the_scenario_dock_shows_typed_checks(qtbot: QtBot, tmp_path: Path,
     assert [c.passed for c in blocker.args[0].checks] == [True, False]
     rows = [dock.checks.topLevelItem(i) for i in range(dock.checks.topLevelItemCount())]
     assert [(r.text(1), r.text(2), r.text(3)) for r in rows] == [
-        ('WAITFOR "Calisma_DB".ET', ">=T#5s", "T#5s"),
-        ('EXPECT "Çalışma Süresi"', "T#4s", "T#5s")]
+        ('WAITFOR "Calisma_DB".ET', ">=T#5S", "T#5S"),
+        ('EXPECT "Çalışma Süresi"', "T#4S", "T#5S")]
