@@ -2704,133 +2704,138 @@
         <translation>&amp;Address (host:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="215"/>
         <source>&amp;Map file (CSV):</source>
         <translation>&amp;Map file (CSV):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="138"/>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="250"/>
         <source>the {0} map</source>
         <translation>the {0} map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="139"/>
         <source>Choose…</source>
         <translation>Choose…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="140"/>
         <source>Dialect&apos;s map</source>
         <translation>Dialect&apos;s map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="141"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
         <translation>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="143"/>
         <source>&amp;Holding registers:</source>
         <translation>&amp;Holding registers:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="145"/>
         <source>Clients connected:</source>
         <translation>Clients connected:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
         <source>Requests a second:</source>
         <translation>Requests a second:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="163"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Type the address as host:port, e.g. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>Cannot listen on {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
         <source>Modbus map file</source>
         <translation>Modbus map file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus maps (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="208"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="207"/>
         <source>Bit memory (%MW)</source>
         <translation>Bit memory (%MW)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="209"/>
         <source>Data block {0}</source>
         <translation>Data block {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="214"/>
+        <source>&amp;Map file (CSV) or DB:</source>
+        <translation>&amp;Map file (CSV) or DB:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>Cannot read the map {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="230"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="233"/>
         <source>The map {0} is not served:</source>
         <translation>The map {0} is not served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="246"/>
         <source>the {0} map, holding registers in the DB {1}</source>
         <translation>the {0} map, holding registers in the DB {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="249"/>
         <source>the file {0}</source>
         <translation>the file {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="272"/>
         <source>Stop server</source>
         <translation>Stop server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="273"/>
         <source>Start server</source>
         <translation>Start server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="276"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="277"/>
         <source>Map served:</source>
         <translation>Map served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="277"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="278"/>
         <source>Map to serve:</source>
         <translation>Map to serve:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="281"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="282"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="286"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Other computers on the network can read and write this PLC.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="291"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
     </message>

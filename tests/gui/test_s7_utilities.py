@@ -135,6 +135,7 @@ def test_the_modbus_dock_serves_a_global_db(s7_docks: PlcDocks) -> None:
     session, dock = s7_docks.session, s7_docks.modbus
     dock.show()
     assert dock.holding.isVisibleTo(dock)
+    assert dock.map_label.text() == "&Map file (CSV) or DB:"
     assert [dock.holding.itemText(i) for i in range(dock.holding.count())] == [
         "Bit memory (%MW)", 'Data block "DB_Modbus"']
     assert dock.served.text() == "the Siemens S7-1200 map"

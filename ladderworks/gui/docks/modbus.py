@@ -134,7 +134,6 @@ class ModbusDock(Retranslating, QDockWidget):
         """Texts in the UI language."""
         self.setWindowTitle(translate("ModbusDock", "Modbus server"))
         self.address_label.setText(translate("ModbusDock", "&Address (host:port):"))
-        self.map_label.setText(translate("ModbusDock", "&Map file (CSV):"))
         self.map_file.setPlaceholderText(translate("ModbusDock", "the {0} map").format(
             family_title(self.session.family)))
         self.map_choose.setText(translate("ModbusDock", "Choose…"))
@@ -212,6 +211,8 @@ class ModbusDock(Retranslating, QDockWidget):
         self.holding.blockSignals(False)
         self.holding.setVisible(bool(blocks))
         self.holding_label.setVisible(bool(blocks))
+        self.map_label.setText(translate("ModbusDock", "&Map file (CSV) or DB:") if blocks
+                               else translate("ModbusDock", "&Map file (CSV):"))
 
     def read_map_file(self) -> tuple[bool, ModbusMap | None]:
         """(True, the map file's map, a DB's map, or None for the dialect's map when neither
