@@ -172,3 +172,34 @@ def test_a_timers_preset_is_named_apart_from_its_instance(
     instance = [row for row in rows if "parameter instance" in row]
     assert len(moves) == 2 and all(row[1] == '"Karıştırma Süresi".PT' for row in moves)
     assert instance[0][1] == '"Karıştırma Süresi"'
+
+
+def test_a_recorded_s7_scenario_names_its_tags_and_replays() -> None:
+    from ladderworks.core.dialects.s7.devices import parse_absolute
+    from ladderworks.core.plc.recorder import ScenarioRecorder
+
+    program = parse_file(MODBUS).program
+    binary = compile_program(program).binary
+    assert binary is not None
+    plc = PlcRun(period_ms=10)
+    assert plc.load(binary, program) == []
+    plc.start()
+    recorder = ScenarioRecorder(plc, "recorded")
+    recorder.start()
+    plc.run_scans(2)
+    plc.set_bit(parse_absolute("%I0.0")[0], 1)
+    plc.write(parse_absolute("%IW2")[0], 1234, 2)  # "Analog", an Int: by its tag
+    plc.write(parse_absolute("%IB3")[0], 7, 1)  # one byte of it: by its address
+    plc.run_scans(2)
+    plc.force(parse_absolute("%I0.1")[0], 1)
+    plc.run_scans(2)
+    recorder.stop()
+    written = recorder.text()
+    assert written.splitlines()[2:] == [
+        'SET,20,"Start",1', 'SET,0,"Analog",0x4D2,WORD', "SET,0,%IB3,0x7,BYTE",
+        'FORCE,20,"Stop",1', 'EXPECT,10,"Motor",0,BIT']  # "Stop" forced: "Motor" reset
+    again = PlcRun(period_ms=10)
+    assert again.load(binary, program) == []
+    scenario = parse_scenario(written, "again", program.symbols, program.dialect)
+    assert scenario.ok, scenario.error_texts()
+    assert run_scenario(again, scenario).passed
