@@ -51,14 +51,19 @@ def shown_name(spec: InstructionSpec) -> str:
     return spelling(spec.dialect).name(spec) if spec.dialect else spec.name
 
 
-def _place_step(spec: InstructionSpec) -> StepName:
-    """The undo step of placing a box or a dialect's contact of row `spec`."""
-    return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"), shown_name(spec))
+def _place_step(title: str) -> StepName:
+    """The undo step of placing a box or a dialect's contact called `title`."""
+    return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"), title)
 
 
-def _params_step(spec: InstructionSpec) -> StepName:
+def _params_step(title: str) -> StepName:
     """The undo step of changing the operands of a box or a dialect's contact."""
-    return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"), shown_name(spec))
+    return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"), title)
+
+
+def _address_step(text: str) -> StepName:
+    """The undo step of a contact's or coil's new address (or S7 operand) `text`."""
+    return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text)
 
 
 def _keeping_end(operation: Callable[[LadderNetwork], object]
@@ -114,7 +119,7 @@ class LadderEdits:
                 core.set_comment(network, row, col, comment)
 
         return self.run_edit(index, address_and_comment,
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), shown))
+                             _address_step(shown))
 
     def set_operand(self, index: int, row: int, col: int, text: str, address: Address | None,
                     comment: str | None = None) -> bool:
@@ -127,7 +132,7 @@ class LadderEdits:
                 core.set_comment(network, row, col, comment)
 
         return self.run_edit(index, operand_and_comment,
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
+                             _address_step(text))
 
     def set_comments(self, index: int, lines: list[str]) -> bool:
         """A network's comment lines."""
@@ -221,7 +226,7 @@ class LadderEdits:
                 params = placed_params(spec, instruction.params, others)  # Fatek: its FO byte
                 element = FunctionBox.new(spec.name, params, dialog.comment_text)
                 if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
-                                 _place_step(spec)):
+                                 _place_step(shown_name(spec))):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
                                                             element))
             else:
@@ -233,7 +238,7 @@ class LadderEdits:
                         core.set_comment(network, row, col, dialog.comment_text)
 
                 self.run_edit(index, params_and_comment,  # one step: parameters and comment
-                              _params_step(spec))
+                              _params_step(shown_name(spec)))
             grid.setFocus()
 
         dialog.accepted.connect(done)
@@ -262,14 +267,14 @@ class LadderEdits:
                 element = Contact(None, False, dialog.comment_text, (), spec.name,
                                   instruction.params)
                 if self.run_edit(index, lambda n: core.place_row_contact(n, row, col, element),
-                                 _place_step(spec)):
+                                 _place_step(shown_name(spec))):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
                                                             element))
             else:
                 changed = replace(contact, params=instruction.params,
                                   comment=dialog.comment_text)
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, changed),
-                              _params_step(spec))
+                              _params_step(shown_name(spec)))
             grid.setFocus()
 
         dialog.accepted.connect(done)
@@ -295,8 +300,7 @@ class LadderEdits:
             element.mark.split("\n")[0] or name
         dialog = OperandDialog(title, model.operands(element), self.grid)
         self.operand_dialog = dialog
-        step = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"), title) if placing \
-            else editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"), title)
+        step = _place_step(title) if placing else _params_step(title)
 
         def done() -> None:
             changed = model.with_operands(element, dialog.texts())
