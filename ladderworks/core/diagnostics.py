@@ -481,6 +481,9 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "network {network}: a {language} network is shown, not simulated"),
     "s7-call-unknown": QT_TRANSLATE_NOOP(
         "Diagnostic", "network {network}: the block '{block}' it calls is not in the program"),
+    "s7-tag-undeclared": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: {text} is in none of the tag tables read; "
+        "LadderWorks gives it a place of its own ({type})"),
     "s7-type": QT_TRANSLATE_NOOP(
         "Diagnostic", "network {network}: {part} on the type '{type}' is not simulated"),
     "s7-memory-full": QT_TRANSLATE_NOOP(

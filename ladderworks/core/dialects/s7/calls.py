@@ -83,8 +83,8 @@ def lower_call(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                outputs: dict[str, Expr | None]) -> Expr | None:
     """A call: EN kept, parameters in, the callee's networks, parameters out."""
     found = callee_of(lowering, part)
-    if found is None:
-        raise _fail(lowering, index, part, "s7-call-unknown", block=part.call)
+    if found is None:  # not exported with the program (a library block …): shown only
+        return lowering.shown_only(index, part, power, "s7-call-unknown", block=part.call)
     callee, scope = found
     if lowering.depth >= MAX_DEPTH or callee is lowering.block:
         raise _fail(lowering, index, part, "s7-wire", part=callee.name,

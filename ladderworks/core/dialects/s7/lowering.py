@@ -15,7 +15,14 @@ from dataclasses import dataclass, field
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7 import boxes, calls
-from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part, S7Network
+from ladderworks.core.dialects.s7.graph import (
+    Block,
+    Operand,
+    OperandKind,
+    Part,
+    S7Network,
+    Tag,
+)
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
 from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinGraph, emit_expr
 from ladderworks.core.dialects.s7.starts import lreal_constant, start_values
@@ -31,6 +38,7 @@ COUNTERS = {"CTU": "S7.CTU", "CTD": "S7.CTD", "CTUD": "S7.CTUD"}
 COILS = {"Coil": "WRT", "SCoil": "SET", "RCoil": "RST"}
 _TEMPLATE_KEYS = ("srctype", "src_type", "time_type", "timetype", "counttype", "count_type",
                   "value_type", "valuetype", "type")
+UNDECLARED = "Not in the tag tables read (laid out by LadderWorks)"
 _MAIN_IN = ("in", "pre", "en", "cu", "cd", "s", "r", "clk")
 
 
@@ -67,6 +75,7 @@ class BlockLowering:
     counters: Counters = field(default_factory=Counters)
     scope: tuple[str, ...] = ()
     depth: int = 0
+    shown: set[str] = field(default_factory=set)  # parts shown, not simulated (shown_only)
 
     def lower_callee(self, callee: Block, scope: tuple[str, ...]
                      ) -> tuple[list[Network], list[Diagnostic]]:
@@ -128,6 +137,7 @@ class BlockLowering:
             return
         graph = PinGraph(network)
         graph.index = index
+        self.shown = set()  # UIds are a network's own
         if graph.missing:
             uid = graph.missing[0]
             raise self.fail(index, None, "s7-wire", part=uid, why="a wire to a part that is not "
@@ -143,6 +153,16 @@ class BlockLowering:
                                                       part=uid, why="a loop of wires")):
             outputs[part.uid] = self.part(index, graph, part, outputs)
 
+    def shown_only(self, index: int, where: Part, power: Expr, code: str, **args: object
+                   ) -> Expr:
+        """A part LadderWorks does not simulate, kept in its network: a warning at its network
+        and part; its ENO (`out`, `eno`) follows its EN, its other outputs give no power and
+        the operands it would write are left as they are [LW]."""
+        self.shown.add(where.uid)
+        self.diagnostics.append(Diagnostic(code, {"network": index, "uid": where.uid, **args},
+                                           where.line, 1, Severity.WARNING))
+        return power
+
     def emit(self, instructions: list[Instruction]) -> None:
         self.networks.append(Network(instructions))
 
@@ -154,6 +174,8 @@ class BlockLowering:
         for end in sources:
             if end.powerrail:
                 terms.append(("on",))
+            elif end.part in self.shown and end.pin not in ("out", "eno"):
+                continue  # a shown-only part's other outputs give no power
             else:
                 found = outputs.get(end.part)
                 other = graph.parts.get(end.part)
@@ -178,13 +200,23 @@ class BlockLowering:
         if operand.kind is OperandKind.CONSTANT:
             on = operand.text.upper() in ("TRUE", "1")
             return ("bit", ALWAYS_ON if on != negated else ALWAYS_OFF, False)
-        place = self.place(index, part, operand)
+        place = self.place(index, part, operand, guess="Bool")
         if place.address.bit is None:
             raise self.fail(index, part, "s7-type", part=part.name, type=place.type_name)
         return ("bit", place.address, negated)
 
-    def place(self, index: int, part: Part, operand: Operand, instance: str = "") -> Place:
+    def place(self, index: int, part: Part, operand: Operand, instance: str = "",
+              guess: str = "") -> Place:
         found = self.layout.resolve(self.block, operand, instance, self.scope)
+        program = self.layout.program
+        if found is None and guess and operand.kind is OperandKind.GLOBAL and \
+                len(operand.path) == 1 and program.block(operand.path[0]) is None:
+            # a tag of a table not exported with the block: a place of LadderWorks' own [LW]
+            program.tags.append(Tag(operand.path[0], guess, "", "", UNDECLARED))
+            self.diagnostics.append(Diagnostic("s7-tag-undeclared", {
+                "network": index, "uid": part.uid, "text": operand.display(), "type": guess},
+                part.line, 1, Severity.WARNING))
+            found = self.layout.resolve(self.block, operand, instance, self.scope)
         if found is None and self.layout.full:
             raise self.fail(index, part, "s7-memory-full", text=operand.display())
         if found is None:
@@ -278,7 +310,7 @@ class BlockLowering:
             return None
         if name == "Call":
             return calls.lower_call(self, index, graph, part, power, outputs)
-        raise self.fail(index, part, "s7-part-unknown", part=name)
+        return self.shown_only(index, part, power, "s7-part-unknown", part=name)
 
     def gate(self, graph: PinGraph, part: Part, outputs: dict[str, Expr | None]) -> Expr | None:
         """O (OR), A (AND), X (XOR of two) of the inputs in1 … inN, a negated pin inverted; an

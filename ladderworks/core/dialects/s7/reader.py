@@ -13,6 +13,7 @@ from pathlib import Path
 
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.dialects.s7 import system_tags
 from ladderworks.core.dialects.s7.graph import Block, S7Program
 from ladderworks.core.dialects.s7.layout import (
     COUNTER_MEMBERS,
@@ -93,7 +94,8 @@ def build(blocks: list[Parsed], tags: list, texts: dict[str, dict[str, str]],
     """The Program of the entry block among `blocks`, with the tags' symbols."""
     for parsed in blocks:
         _titles(parsed, texts)
-    program = S7Program([p.block for p in blocks], list(tags))
+    every = [p.block for p in blocks]
+    program = S7Program(every, list(tags) + system_tags.implied(every, list(tags)))
     layout = Layout(program)
     code = [b for b in program.blocks if b.kind in ("OB", "FC", "FB")]
     entry = code[0] if code else None  # the file opened, or a folder's OB (put first)

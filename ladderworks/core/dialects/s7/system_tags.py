@@ -1,0 +1,43 @@
+"""TIA's default names of the system and clock memory bits, as tags when a block uses them.
+
+A block exported alone names `"AlwaysTRUE"`, `"FirstScan"`, `"Clock_1Hz"` … without the
+default tag table that declares them; LadderWorks models the system byte at %MB1 and the
+clock byte at %MB0 (docs/dialects.md, S7-1200 memory), so those names are given their
+addresses there when the program's own tags do not declare them [LW].
+"""
+
+from __future__ import annotations
+
+from ladderworks.core.dialects.s7.graph import Block, OperandKind, Tag
+
+TABLE = "System memory (TIA's default names)"
+DEFAULTS: dict[str, tuple[str, str]] = {
+    "System_Byte": ("Byte", "%MB1"), "FirstScan": ("Bool", "%M1.0"),
+    "DiagStatusUpdate": ("Bool", "%M1.1"), "AlwaysTRUE": ("Bool", "%M1.2"),
+    "AlwaysFALSE": ("Bool", "%M1.3"), "Clock_Byte": ("Byte", "%MB0"),
+    "Clock_10Hz": ("Bool", "%M0.0"), "Clock_5Hz": ("Bool", "%M0.1"),
+    "Clock_2.5Hz": ("Bool", "%M0.2"), "Clock_2Hz": ("Bool", "%M0.3"),
+    "Clock_1.25Hz": ("Bool", "%M0.4"), "Clock_1Hz": ("Bool", "%M0.5"),
+    "Clock_0.625Hz": ("Bool", "%M0.6"), "Clock_0.5Hz": ("Bool", "%M0.7"),
+}
+_BY_LOWER = {name.lower(): name for name in DEFAULTS}
+
+
+def implied(blocks: list[Block], tags: list[Tag]) -> list[Tag]:
+    """The default system/clock memory tags the blocks name and neither the tags nor the
+    blocks declare."""
+    declared = {t.name.lower() for t in tags} | {b.name.lower() for b in blocks}
+    found: dict[str, Tag] = {}
+    for block in blocks:
+        for network in block.networks:
+            operands = [w.source.operand for w in network.wires] + \
+                [t.operand for w in network.wires for t in w.targets]
+            for operand in operands:
+                if operand is None or operand.kind is not OperandKind.GLOBAL or \
+                        len(operand.path) != 1:
+                    continue
+                name = _BY_LOWER.get(operand.path[0].lower())
+                if name is not None and name.lower() not in declared:
+                    type_name, address = DEFAULTS[name]
+                    found.setdefault(name, Tag(name, type_name, address, "", TABLE))
+    return list(found.values())
