@@ -1482,101 +1482,106 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
+        <translation>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="486"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="504"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="517"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>

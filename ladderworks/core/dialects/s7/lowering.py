@@ -209,13 +209,15 @@ class BlockLowering:
               guess: str = "") -> Place:
         found = self.layout.resolve(self.block, operand, instance, self.scope)
         program = self.layout.program
-        if found is None and guess and operand.kind is OperandKind.GLOBAL and \
-                len(operand.path) == 1 and program.block(operand.path[0]) is None:
-            # a tag of a table not exported with the block: a place of LadderWorks' own [LW]
-            program.tags.append(Tag(operand.path[0], guess, "", "", UNDECLARED))
+        if found is None and (guess or operand.address) and operand.kind is \
+                OperandKind.GLOBAL and len(operand.path) == 1 and \
+                program.block(operand.path[0]) is None and program.tag(operand.path[0]) is None:
+            # a tag of a table not exported with the block: the address the export shows
+            # (Informative), else a place of LadderWorks' own [LW]
+            program.tags.append(Tag(operand.path[0], guess, operand.address, "", UNDECLARED))
             self.diagnostics.append(Diagnostic("s7-tag-undeclared", {
-                "network": index, "uid": part.uid, "text": operand.display(), "type": guess},
-                part.line, 1, Severity.WARNING))
+                "network": index, "uid": part.uid, "text": operand.display(),
+                "type": operand.address or guess}, part.line, 1, Severity.WARNING))
             found = self.layout.resolve(self.block, operand, instance, self.scope)
         if found is None and self.layout.full:
             raise self.fail(index, part, "s7-memory-full", text=operand.display())

@@ -9,7 +9,6 @@ from pathlib import Path
 import pytest
 
 from ladderworks.core.diagnostics import Severity
-
 from ladderworks.core.dialects.s7.graph import OperandKind
 from ladderworks.core.dialects.s7.sd_parser import ParseError, parse_sd
 from ladderworks.core.dialects.s7.tags import read_tag_table

@@ -1,0 +1,120 @@
+"""What real TIA exports hold, as LadderWorks' own export (data/real_patterns.xml): parts with a
+Version, a negated contact, a tag known only by its informative address, TIA's default
+system memory names, an array element, a LiteralConstant with its ConstantType, a
+TypedConstant, a LocalConstant and a GlobalConstant, a box TIA has and LadderWorks does not
+(SCALE_X), a multi-instance call of an FB not exported, ENO wires, an STL network, an empty
+network, titles in cultures without en-US. Everything opens and runs; what is not simulated
+is a warning at its network and part (docs/dialects.md, "Real exports tried")."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ladderworks.core.compiler import compile_program
+from ladderworks.core.diagnostics import Severity
+from ladderworks.core.dialects.s7.devices import parse_absolute
+from ladderworks.core.dialects.s7.xml_reader import read_document
+from ladderworks.core.il.reading import parse_bytes, parse_file
+from ladderworks.core.plc.engine import ScanEngine
+from tests.core.dialects.s7.xml_docs import document, tag, wire
+
+DATA = Path(__file__).parent / "data" / "real_patterns.xml"
+
+
+def test_the_export_reads_with_warnings_only() -> None:
+    result = parse_file(DATA)
+    codes = [(d.code, d.args.get("network")) for d in result.diagnostics]
+    assert all(d.severity is Severity.WARNING for d in result.diagnostics), \
+        [d.message() for d in result.diagnostics]
+    assert sorted(set(codes) - {("s7xml-part", 4)}) == [
+        ("s7-call-unknown", 4), ("s7-not-simulated", 5), ("s7-part-unknown", 4),
+        ("s7-tag-undeclared", 1)]
+    by_code = {d.code: d for d in result.diagnostics}
+    assert by_code["s7-part-unknown"].args["uid"] == "26"  # at its network and part
+    assert by_code["s7-call-unknown"].args["uid"] == "27"
+    assert "%I0.3" in by_code["s7-tag-undeclared"].message()
+
+
+def test_titles_texts_and_operands_as_tia_shows_them() -> None:
+    block = read_document(DATA.read_bytes()).blocks[0]
+    assert block.networks[0].title == "Tür offen"  # no en-US text: the culture that has one
+    assert [n.language for n in block.networks] == ["LAD", "LAD", "LAD", "LAD", "STL", "LAD"]
+    assert block.networks[4].source.splitlines() == ["A #Baslat", "= #Gecici"]
+    assert block.networks[5].parts == []
+    move = block.networks[1]
+    texts = {w.targets[0].pin: w.source.operand.display() for w in move.wires
+             if w.source.operand is not None}
+    assert texts == {"in": "5", "operand": "#Bayraklar[3]"}
+    contact = block.networks[0].part("24")
+    assert contact is not None and contact.negated == frozenset({"operand"})
+
+
+def _engine() -> ScanEngine:
+    result = parse_file(DATA)
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None, [d.message() for d in compiled.diagnostics]
+    return ScanEngine(compiled.binary)
+
+
+def test_it_runs_what_it_reads() -> None:
+    engine = _engine()
+    symbols = parse_file(DATA).program.symbols
+    engine.scan()
+    # NOT "Kapi_Acik" (%I0.3, from the export's informative address) AND "AlwaysTRUE"
+    assert engine.memory.bit(parse_absolute("%Q0.1")[0]) == 1
+    engine.memory.set_bit(parse_absolute("%I0.3")[0], 1)
+    engine.scan()
+    assert engine.memory.bit(parse_absolute("%Q0.1")[0]) == 0
+    # MOVE 5 → #Sayi, its ENO → #Bayraklar[3] (Array[1..8] of Bool, a byte each from #Bayraklar)
+    assert engine.memory.read(symbols.by_symbol["#Sayi"], 2, signed=True) == 5
+    flags = symbols.by_symbol["#Bayraklar"]
+    third = type(flags)(flags.area, flags.byte + 2, 0)
+    assert engine.memory.bit(third) == 1
+    # #Sayi > SINIR (a LocalConstant, 10) is false: SCALE_X and the call pass no power
+    assert engine.memory.read(symbols.by_symbol["#SINIR"], 2, signed=True) == 10
+    assert engine.memory.bit(symbols.by_symbol["#Gecici"]) == 0
+
+
+def _abs(uid: int, area: str, bit: int) -> str:
+    return (f'<Access Scope="GlobalVariable" UId="{uid}"><Address Area="{area}" Type="Bool" '
+            f'BitOffset="{bit}" /></Access>')
+
+
+def test_a_box_not_simulated_passes_en_to_eno_and_nothing_else() -> None:
+    """%I0.0 → SCALE_X (EN); its ENO → %Q0.0, its Q → %Q0.1 (no power: not simulated)."""
+    body = ("<Parts>" + _abs(21, "Input", 0) + _abs(22, "Output", 0) + _abs(23, "Output", 1) +
+            '<Part Name="Contact" UId="30" /><Part Name="SCALE_X" Version="1.0" UId="31" />'
+            '<Part Name="Coil" UId="32" /><Part Name="Coil" UId="33" /></Parts><Wires>' +
+            wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+            wire(42, "30:out", "31:en") + wire(43, "31:eno", "32:in") +
+            wire(44, "22", "32:operand") + wire(45, "31:q", "33:in") +
+            wire(46, "23", "33:operand") + "</Wires>")
+    result = parse_bytes(document([body]).encode("utf-8"))
+    shown = [d for d in result.diagnostics if d.code == "s7-part-unknown"]
+    assert len(shown) == 1 and shown[0].severity is Severity.WARNING
+    assert shown[0].args == {"network": 1, "uid": "31", "part": "SCALE_X"}
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    for value in (1, 0, 1):
+        engine.memory.set_bit(parse_absolute("%I0.0")[0], value)
+        engine.scan()
+        assert engine.memory.bit(parse_absolute("%Q0.0")[0]) == value
+        assert engine.memory.bit(parse_absolute("%Q0.1")[0]) == 0
+
+
+def test_default_system_memory_names_are_known_and_a_declared_tag_wins() -> None:
+    body = ("<Parts>" + tag(21, "FirstScan") + _abs(22, "Output", 0) +
+            '<Part Name="Contact" UId="30" /><Part Name="Coil" UId="31" /></Parts><Wires>' +
+            wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+            wire(42, "30:out", "31:in") + wire(43, "22", "31:operand") + "</Wires>")
+    result = parse_bytes(document([body]).encode("utf-8"))
+    assert result.diagnostics == []
+    assert result.program.symbols.by_symbol['"FirstScan"'] == parse_absolute("%M1.0")[0]
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    engine.scan()
+    first = engine.memory.bit(parse_absolute("%Q0.0")[0])
+    engine.scan()
+    assert (first, engine.memory.bit(parse_absolute("%Q0.0")[0])) == (1, 0)
