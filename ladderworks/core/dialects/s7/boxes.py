@@ -37,7 +37,8 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
             if uid == part.uid and pin.startswith("out"):
                 for operand in targets:
                     code.append(Instruction("S7.MOVE", None, (
-                        int(vtype), source, lowering.place(index, part, operand).address),
+                        int(vtype), source,
+                        lowering.place(index, part, operand, guess=vtype.name).address),
                         line=line))
         if not code:
             raise lowering.fail(index, part, "s7-pin-missing", part=name, pin="OUT1")
@@ -64,7 +65,8 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
     if not outs:
         raise lowering.fail(index, part, "s7-pin-missing", part=name, pin="OUT")
     code = [Instruction(MATH[name], None, (int(vtype), first, second,
-                                           lowering.place(index, part, outs[0]).address),
+                                           lowering.place(index, part, outs[0],
+                                                          guess=vtype.name).address),
                         line=line)]
     return lowering.statement(part, [power], code, lowering.keep(graph, part))
 

@@ -66,7 +66,7 @@ def _copy_out(lowering: BlockLowering, index: int, part: Part, source: Place,
               operand: Operand) -> None:
     """A parameter out to its actual."""
     line = part.line
-    target = lowering.place(index, part, operand)
+    target = lowering.place(index, part, operand, guess=source.type_name)
     if source.address.bit is not None or target.address.bit is not None:
         if source.address.bit is None or target.address.bit is None:
             raise _fail(lowering, index, part, "s7-type", part=part.call, type=source.type_name)

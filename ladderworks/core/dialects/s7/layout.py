@@ -342,6 +342,9 @@ class Layout:
     def global_name(self, path: tuple[str, ...], as_instance: str = "") -> Place | None:
         """A tag (`"Start"`), a global DB member (`"DB".a.b`), or an instance named by use."""
         tag = self.program.tag(path[0]) if len(path) == 1 else None
+        if tag is None and len(path) > 1 and self.program.block(path[0]) is None:
+            tag = self.program.tag(".".join(path))  # a member of a DB not read, as one name
+            path = (tag.name,) if tag is not None else path
         if tag is not None and tag.address:
             try:
                 address, _width = parse_absolute(tag.address)

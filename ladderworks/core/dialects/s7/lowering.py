@@ -14,14 +14,13 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
-from ladderworks.core.dialects.s7 import boxes, calls
+from ladderworks.core.dialects.s7 import boxes, calls, system_tags
 from ladderworks.core.dialects.s7.graph import (
     Block,
     Operand,
     OperandKind,
     Part,
     S7Network,
-    Tag,
 )
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
 from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinGraph, emit_expr
@@ -38,7 +37,6 @@ COUNTERS = {"CTU": "S7.CTU", "CTD": "S7.CTD", "CTUD": "S7.CTUD"}
 COILS = {"Coil": "WRT", "SCoil": "SET", "RCoil": "RST"}
 _TEMPLATE_KEYS = ("srctype", "src_type", "time_type", "timetype", "counttype", "count_type",
                   "value_type", "valuetype", "type")
-UNDECLARED = "Not in the tag tables read (laid out by LadderWorks)"
 _MAIN_IN = ("in", "pre", "en", "cu", "cd", "s", "r", "clk")
 
 
@@ -210,14 +208,13 @@ class BlockLowering:
         found = self.layout.resolve(self.block, operand, instance, self.scope)
         program = self.layout.program
         if found is None and (guess or operand.address) and operand.kind is \
-                OperandKind.GLOBAL and len(operand.path) == 1 and \
-                program.block(operand.path[0]) is None and program.tag(operand.path[0]) is None:
-            # a tag of a table not exported with the block: the address the export shows
-            # (Informative), else a place of LadderWorks' own [LW]
-            program.tags.append(Tag(operand.path[0], guess, operand.address, "", UNDECLARED))
+                OperandKind.GLOBAL and operand.path and program.block(operand.path[0]) is None \
+                and program.tag(operand.path[0]) is None:
+            # a tag of a table, or a member of a DB, not exported with the block [LW]
+            where = system_tags.declare(program, operand, guess)
             self.diagnostics.append(Diagnostic("s7-tag-undeclared", {
-                "network": index, "uid": part.uid, "text": operand.display(),
-                "type": operand.address or guess}, part.line, 1, Severity.WARNING))
+                "network": index, "uid": part.uid, "text": operand.display(), "type": where},
+                part.line, 1, Severity.WARNING))
             found = self.layout.resolve(self.block, operand, instance, self.scope)
         if found is None and self.layout.full:
             raise self.fail(index, part, "s7-memory-full", text=operand.display())
@@ -344,7 +341,7 @@ class BlockLowering:
             if found is None:
                 raise self.fail(index, part, "s7-operand-unknown", text=operand.text)
             return found
-        return self.place(index, part, operand).address
+        return self.place(index, part, operand, guess=vtype.name).address
 
     def vtype(self, index: int, graph: PinGraph, part: Part, pins: tuple[str, ...]
               ) -> typed.ValueType:

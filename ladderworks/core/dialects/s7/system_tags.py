@@ -1,4 +1,5 @@
-"""TIA's default names of the system and clock memory bits, as tags when a block uses them.
+"""Names a block uses that no tag table read declares: TIA's default names of the system and
+clock memory bits, and any other tag or DB member not exported with the block.
 
 A block exported alone names `"AlwaysTRUE"`, `"FirstScan"`, `"Clock_1Hz"` … without the
 default tag table that declares them; LadderWorks models the system byte at %MB1 and the
@@ -8,9 +9,12 @@ addresses there when the program's own tags do not declare them [LW].
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.s7.graph import Block, OperandKind, Tag
+from ladderworks.core.address import AddressError
+from ladderworks.core.dialects.s7.devices import parse_absolute
+from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, S7Program, Tag
 
 TABLE = "System memory (TIA's default names)"
+UNDECLARED = "Not in the tag tables read (laid out by LadderWorks)"
 DEFAULTS: dict[str, tuple[str, str]] = {
     "System_Byte": ("Byte", "%MB1"), "FirstScan": ("Bool", "%M1.0"),
     "DiagStatusUpdate": ("Bool", "%M1.1"), "AlwaysTRUE": ("Bool", "%M1.2"),
@@ -41,3 +45,18 @@ def implied(blocks: list[Block], tags: list[Tag]) -> list[Tag]:
                     type_name, address = DEFAULTS[name]
                     found.setdefault(name, Tag(name, type_name, address, "", TABLE))
     return list(found.values())
+
+
+def declare(program: S7Program, operand: Operand, guess: str) -> str:
+    """Make a tag of a global name nothing declares (`"DB".a.b` as one name) [LW]: at the
+    address the export shows (Informative) when LadderWorks has that area, else of type
+    `guess`, laid out in the D area. Returns the address, else the type (for the warning)."""
+    name = ".".join(operand.path)
+    address = operand.address if len(operand.path) == 1 else ""
+    try:
+        if address:
+            parse_absolute(address)
+    except AddressError:
+        address = ""
+    program.tags.append(Tag(name, guess, address, "", UNDECLARED))
+    return address or guess

@@ -15,6 +15,7 @@ from ladderworks.core.dialects.s7.graph import Block, S7Program, Tag
 from ladderworks.core.dialects.s7.sd_parser import Parsed
 from ladderworks.core.dialects.s7.texts import read_texts
 from ladderworks.core.dialects.s7.xml_reader import (
+    EXPORT_KINDS,
     XmlRead,
     check_calls,
     is_simaticml,
@@ -35,11 +36,11 @@ def _head(path: Path) -> str:
         return ""
 
 
-def _is_block_file(path: Path) -> bool:
+def _is_block_file(path: Path, kinds: tuple[str, ...] = ("SW.Blocks.",)) -> bool:
     if path.suffix.lower() != ".xml":
         return False
     head = _head(path)
-    return "<Document" in head and "SW.Blocks." in head
+    return "<Document" in head and any(kind in head for kind in kinds)
 
 
 def wants(path: Path, data: bytes | None) -> bool:
@@ -50,7 +51,7 @@ def wants(path: Path, data: bytes | None) -> bool:
             any(_is_block_file(p) for p in files)
     if data is not None:
         return is_simaticml(data[:200000].decode("utf-8", "replace"))
-    return _is_block_file(path)
+    return _is_block_file(path, EXPORT_KINDS)  # a type or tag table opens with its folder
 
 
 def _read_file(path: Path, diagnostics: list[Diagnostic]) -> XmlRead | None:

@@ -70,10 +70,14 @@ def _subelements(node: Element) -> str:
     return "[" + ", ".join(found.get(i, "") for i in range(low, max(found) + 1)) + "]"
 
 
+EXPORT_KINDS = ("SW.Blocks.", "SW.Types.PlcStruct", "SW.Tags.PlcTagTable")
+
+
 def is_simaticml(text: str) -> bool:
-    """True for a SimaticML document with blocks (a tag table alone is not a program)."""
-    head = text[:4000]
-    return "<Document" in head and "SW.Blocks." in text[:200000]
+    """True for a SimaticML document of blocks, a PLC data type or a tag table (the last two
+    open with their folder's blocks)."""
+    head, body = text[:4000], text[:200000]
+    return "<Document" in head and any(kind in body for kind in EXPORT_KINDS)
 
 
 def _multilingual(node: Element | None) -> dict[str, str]:
@@ -126,6 +130,8 @@ class _Reader:
                 self.out.blocks.append(self.block(node, kind))
             elif node.name == "SW.Tags.PlcTagTable":
                 self.tag_table(node)
+            elif node.name == "SW.Types.PlcStruct":  # a PLC data type (UDT): its members
+                self.out.blocks.append(self.plc_type(node))
         if not self.out.blocks and not self.out.tags:
             self.error("s7xml-empty", self.root.line)
         return self.out
@@ -170,6 +176,18 @@ class _Reader:
         units = [u for u in objects.all("SW.Blocks.CompileUnit")] if objects is not None else []
         for index, unit in enumerate(units, start=1):
             block.networks.append(self.network(block, index, unit))
+        return block
+
+    def plc_type(self, node: Element) -> Block:
+        """A `SW.Types.PlcStruct` as a `Type` block, its members under Static (as the SD
+        reader has a `.udt` source's)."""
+        attributes = node.child("AttributeList") or node
+        block = Block("Type", attributes.text_of("Name"))
+        sections = attributes.find("Interface", "Sections")
+        if sections is not None:
+            self.check_ns(sections, "Interface", 0, block.name)
+            block.sections["Static"] = [self.member(m) for s in sections.all("Section")
+                                        for m in s.all("Member")]
         return block
 
     def member(self, node: Element) -> Member:
