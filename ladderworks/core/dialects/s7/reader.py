@@ -56,7 +56,10 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
     for tag in program.tags:
         place = layout.global_name((tag.name,))
         if place is not None:
-            add(f'"{tag.name}"', place.address, tag.comment)
+            head, dot, rest = tag.name.partition(".")  # a member of a DB not read: "DB".a
+            quoted = f'"{head}".{rest}' if dot and tag.table == system_tags.UNDECLARED \
+                else f'"{tag.name}"'
+            add(quoted, place.address, tag.comment)
             table.by_symbol.setdefault(tag.name, place.address)
     for section in ("Input", "Output", "InOut", "Static", "Temp"):
         for member in entry.members(section):

@@ -13,7 +13,7 @@ from pathlib import Path
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.diagnostics import Severity
 from ladderworks.core.dialects.s7.devices import parse_absolute
-from ladderworks.core.dialects.s7.xml_reader import read_document
+from ladderworks.core.dialects.s7.xml_reader import is_simaticml, read_document
 from ladderworks.core.il.reading import parse_bytes, parse_file
 from ladderworks.core.plc.engine import ScanEngine
 from tests.core.dialects.s7.xml_docs import document, tag, wire
@@ -118,3 +118,36 @@ def test_default_system_memory_names_are_known_and_a_declared_tag_wins() -> None
     first = engine.memory.bit(parse_absolute("%Q0.0")[0])
     engine.scan()
     assert (first, engine.memory.bit(parse_absolute("%Q0.0")[0])) == (1, 0)
+
+
+UDT = Path(__file__).parent / "data" / "udt"
+
+
+def test_a_plc_data_type_export_gives_its_members_to_a_db_and_a_missing_db_is_laid_out() -> None:
+    """Tip_Motor.xml (SW.Types.PlcStruct), DB_Hat.xml ("Motor1" : "Tip_Motor"), FC_Hat.xml:
+    "DB_Hat".Motor1.Calisiyor → "DB_Uyari".Lamba, a DB not exported (its DB120 is beyond
+    the DBs LadderWorks addresses: a place of its own)."""
+    for opened in (UDT, UDT / "FC_Hat.xml", UDT / "Tip_Motor.xml"):  # the folder, or any file
+        result = parse_file(opened)
+        assert [(d.code, d.severity) for d in result.diagnostics] == [
+            ("s7-tag-undeclared", Severity.WARNING)]
+        symbols = result.program.symbols.by_symbol
+        assert {'"DB_Hat".Motor1.Calisiyor', '"DB_Hat".Motor1.Hiz', '"DB_Uyari".Lamba'} <= \
+            set(symbols)
+        compiled = compile_program(result.program)
+        assert compiled.binary is not None
+        engine = ScanEngine(compiled.binary)
+        engine.scan()
+        assert engine.memory.read(symbols['"DB_Hat".Adet'], 2) == 3  # its start value
+        assert engine.memory.bit(symbols['"DB_Uyari".Lamba']) == 0
+        engine.memory.set_bit(symbols['"DB_Hat".Motor1.Calisiyor'], 1)
+        engine.scan()
+        assert engine.memory.bit(symbols['"DB_Uyari".Lamba']) == 1
+
+
+def test_a_tag_table_or_type_export_is_known_as_simaticml() -> None:
+    assert is_simaticml((UDT / "Tip_Motor.xml").read_text("utf-8"))
+    table = ('<?xml version="1.0" encoding="utf-8"?>\n<Document><SW.Tags.PlcTagTable ID="0">'
+             '<AttributeList><Name>T</Name></AttributeList></SW.Tags.PlcTagTable></Document>')
+    assert is_simaticml(table)
+    assert not is_simaticml("<Document><Other /></Document>")
