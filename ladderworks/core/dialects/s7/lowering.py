@@ -48,8 +48,6 @@ class LoweringError(Exception):
         self.diagnostic = diagnostic
 
 
-
-
 @dataclass(slots=True)
 class Counters:
     """What every block lowered into one program shares: label numbers and relays used."""
@@ -110,9 +108,11 @@ class BlockLowering:
             before = len(self.networks)
             try:
                 self.network(index, network)
-            except LoweringError as error:
+            except LoweringError as error:  # left out, the others run: a warning [LW]
                 del self.networks[before:]
-                self.diagnostics.append(error.diagnostic)
+                found = error.diagnostic
+                self.diagnostics.append(Diagnostic(found.code, found.args, found.line, 1,
+                                                   Severity.WARNING))
             if len(self.networks) > before:
                 title = network.title or f"Network {index}"
                 self.networks[before].comments = [title, *network.comment.splitlines()]

@@ -13,6 +13,8 @@ def score(text: str) -> int:
     if "<Document" in head[:4000] and any(kind in head for kind in (
             "SW.Blocks.", "SW.Types.PlcStruct", "SW.Tags.PlcTagTable")):  # SimaticML
         return 100
+    if head.lstrip().startswith("<SW.Blocks."):  # a piece of an export (no Document)
+        return 80
     if _HEAD_RE.search(head) is None:
         return 0
     if "wire#powerrail" in head or "S7_" in head:

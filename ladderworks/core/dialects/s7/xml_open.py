@@ -49,9 +49,10 @@ def wants(path: Path, data: bytes | None) -> bool:
         files = [p for p in path.iterdir() if p.is_file()]
         return not any(p.suffix.lower() in reader.SD_SUFFIXES for p in files) and \
             any(_is_block_file(p) for p in files)
-    if data is not None:
-        return is_simaticml(data[:200000].decode("utf-8", "replace"))
-    return _is_block_file(path, EXPORT_KINDS)  # a type or tag table opens with its folder
+    head = data[:200000].decode("utf-8", "replace") if data is not None else _head(path)
+    if is_simaticml(head) or head.lstrip().startswith("<SW."):  # a piece of an export (no
+        return True  # Document): the XML reader names what it lacks (s7xml-empty)
+    return data is None and _is_block_file(path, EXPORT_KINDS)
 
 
 def _read_file(path: Path, diagnostics: list[Diagnostic]) -> XmlRead | None:

@@ -151,3 +151,37 @@ def test_a_tag_table_or_type_export_is_known_as_simaticml() -> None:
              '<AttributeList><Name>T</Name></AttributeList></SW.Tags.PlcTagTable></Document>')
     assert is_simaticml(table)
     assert not is_simaticml("<Document><Other /></Document>")
+
+
+def test_a_piece_of_an_export_is_named_for_what_it_lacks(tmp_path: Path) -> None:
+    """A CompileUnit cut out of an export (as tools keep templates): no crash, s7xml-empty."""
+    piece = tmp_path / "Network.xml"
+    piece.write_text('<SW.Blocks.CompileUnit ID="4" CompositionName="CompileUnits">'
+                     '<AttributeList><NetworkSource /></AttributeList>'
+                     '</SW.Blocks.CompileUnit>', "utf-8")
+    result = parse_file(piece)
+    assert [(d.code, d.line) for d in result.diagnostics] == [("s7xml-empty", 1)]
+
+
+def test_a_network_not_lowered_is_a_warning_and_the_rest_still_compiles() -> None:
+    """A contact on a member the block does not have (s7-operand-unknown) leaves its network
+    out; the other network runs."""
+    bad = ("<Parts>" + tag(21, "Yok", scope="LocalVariable") + _abs(22, "Output", 1) +
+           '<Part Name="Contact" UId="30" /><Part Name="Coil" UId="31" /></Parts><Wires>' +
+           wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+           wire(42, "30:out", "31:in") + wire(43, "22", "31:operand") + "</Wires>")
+    good = ("<Parts>" + _abs(21, "Input", 0) + _abs(22, "Output", 0) +
+            '<Part Name="Contact" UId="30" /><Part Name="Coil" UId="31" /></Parts><Wires>' +
+            wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+            wire(42, "30:out", "31:in") + wire(43, "22", "31:operand") + "</Wires>")
+    interface = ('<Section Name="Static"><Member Name="Lamba" Datatype="Bool" /></Section>')
+    result = parse_bytes(document([bad, good], interface=interface, kind="FB",
+                                  name="Deneme").encode("utf-8"))
+    assert [(d.code, d.severity, d.args["network"]) for d in result.diagnostics] == [
+        ("s7-operand-unknown", Severity.WARNING, 1)]
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    engine.memory.set_bit(parse_absolute("%I0.0")[0], 1)
+    engine.scan()
+    assert engine.memory.bit(parse_absolute("%Q0.0")[0]) == 1
