@@ -21,7 +21,7 @@ from pathlib import Path
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7 import opening
 
-SUFFIXES = (".xml", ".s7dcl", ".db", ".udt")
+SUFFIXES = (".xml", ".s7dcl", ".db", ".udt", ".scl")
 # a diagnostic with one of these codes means the file (or folder) was not read at all
 FATAL = frozenset({"s7xml-empty", "s7xml-malformed", "s7xml-dtd", "s7xml-too-large",
                    "s7-syntax", "s7-cut", "s7-too-large", "s7-tags"})
