@@ -25,6 +25,9 @@ DEFAULTS: dict[str, tuple[str, str]] = {
     "Clock_0.625Hz": ("Bool", "%M0.6"), "Clock_0.5Hz": ("Bool", "%M0.7"),
 }
 _BY_LOWER = {name.lower(): name for name in DEFAULTS}
+_SPELLING = {name.lower(): name for name in (  # a guessed type as TIA spells it
+    "Bool", "SInt", "Int", "DInt", "USInt", "UInt", "UDInt", "Real", "LReal", "Time", "Byte",
+    "Word", "DWord", "Char")}
 
 
 def implied(blocks: list[Block], tags: list[Tag]) -> list[Tag]:
@@ -52,6 +55,7 @@ def declare(program: S7Program, operand: Operand, guess: str) -> str:
     address the export shows (Informative) when LadderWorks has that area, else of type
     `guess`, laid out in the D area. Returns the address, else the type (for the warning)."""
     name = ".".join(operand.path)
+    guess = _SPELLING.get(guess.lower(), guess)
     address = operand.address if len(operand.path) == 1 else ""
     try:
         if address:

@@ -185,3 +185,26 @@ def test_a_network_not_lowered_is_a_warning_and_the_rest_still_compiles() -> Non
     engine.memory.set_bit(parse_absolute("%I0.0")[0], 1)
     engine.scan()
     assert engine.memory.bit(parse_absolute("%Q0.0")[0]) == 1
+
+
+def test_a_disabled_eno_move_a_compare_on_its_eno_and_a_box_tia_has() -> None:
+    """real2/Vanalar.xml: the rail feeds three parts; MOVE (DisabledENO) 0 → "DB_Deger".Vana.
+    "21".Mod (a DB not exported), its ENO → [Mod == 0] → R "DB_Deger".Vana."21".Elle;
+    #Izin → %Q0.2; MOVE_BLK_VARIANT shown only."""
+    result = parse_file(Path(__file__).parent / "data" / "real2" / "Vanalar.xml")
+    assert sorted({(d.code, d.severity) for d in result.diagnostics}) == [
+        ("s7-part-unknown", Severity.WARNING), ("s7-tag-undeclared", Severity.WARNING),
+        ("s7xml-part", Severity.WARNING)]
+    assert "(Int)" in next(d.message() for d in result.diagnostics
+                           if d.code == "s7-tag-undeclared")
+    symbols = result.program.symbols.by_symbol
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    engine.memory.set_bit(symbols['"DB_Deger".Vana.21.Elle'], 1)
+    engine.memory.write(symbols['"DB_Deger".Vana.21.Mod'], 7, 2)
+    engine.memory.set_bit(symbols["#Izin"], 1)
+    engine.scan()
+    assert engine.memory.read(symbols['"DB_Deger".Vana.21.Mod'], 2) == 0
+    assert engine.memory.bit(symbols['"DB_Deger".Vana.21.Elle']) == 0
+    assert engine.memory.bit(parse_absolute("%Q0.2")[0]) == 1
