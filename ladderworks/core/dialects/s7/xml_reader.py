@@ -28,7 +28,13 @@ from ladderworks.core.dialects.s7.graph import (
 )
 from ladderworks.core.dialects.s7.texts import pick
 from ladderworks.core.dialects.s7.xml_fbd import to_lad
-from ladderworks.core.dialects.s7.xml_forms import KNOWN_VERSIONS, address_text, namespace, pin_in
+from ladderworks.core.dialects.s7.xml_forms import (
+    KNOWN_VERSIONS,
+    address_text,
+    namespace,
+    part_in,
+    pin_in,
+)
 from ladderworks.core.dialects.s7.xml_safe import Element, XmlRefused, parse
 from ladderworks.core.dialects.s7.xml_text import component, source_text
 
@@ -294,7 +300,7 @@ class _Reader:
         uid = node.attrs.get("UId", "")
         if node.name == "Call":
             return self.call(node, uid)
-        name = node.attrs.get("Name", "")
+        name = part_in(node.attrs.get("Name", ""))
         part = Part(uid, name, line=node.line)
         if name not in PART_NAMES:
             self.warn("s7xml-part", node.line, uid=uid, part=name, **where)

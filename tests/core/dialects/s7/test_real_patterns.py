@@ -14,6 +14,7 @@ from ladderworks.core.compiler import compile_program
 from ladderworks.core.diagnostics import Severity
 from ladderworks.core.dialects.s7.devices import parse_absolute
 from ladderworks.core.dialects.s7.xml_reader import is_simaticml, read_document
+from ladderworks.core.dialects.s7.xml_writer import flgnet_lines
 from ladderworks.core.il.reading import parse_bytes, parse_file
 from ladderworks.core.plc.engine import ScanEngine
 from tests.core.dialects.s7.xml_docs import document, tag, wire
@@ -208,3 +209,29 @@ def test_a_disabled_eno_move_a_compare_on_its_eno_and_a_box_tia_has() -> None:
     assert engine.memory.read(symbols['"DB_Deger".Vana.21.Mod'], 2) == 0
     assert engine.memory.bit(symbols['"DB_Deger".Vana.21.Elle']) == 0
     assert engine.memory.bit(parse_absolute("%Q0.2")[0]) == 1
+
+
+def test_a_lad_pbox_is_p_trig_and_is_written_back_as_pbox() -> None:
+    """SimaticML's LAD P_TRIG is `Part Name="PBox"` (in, bit → out): the power after it is on
+    for one scan when the power before it rises."""
+    body = ("<Parts>" + _abs(21, "Input", 0) + _abs(22, "Memory", 80) + _abs(23, "Output", 0) +
+            '<Part Name="Contact" UId="30" /><Part Name="PBox" UId="31" />'
+            '<Part Name="Coil" UId="32" /></Parts><Wires>' +
+            wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+            wire(42, "30:out", "31:in") + wire(43, "22", "31:bit") +
+            wire(44, "31:out", "32:in") + wire(45, "23", "32:operand") + "</Wires>")
+    text = document([body])
+    network = read_document(text).blocks[0].networks[0]
+    assert [p.name for p in network.parts] == ["Contact", "PTrig", "Coil"]
+    assert 'Name="PBox"' in "\n".join(flgnet_lines(network))
+    result = parse_bytes(text.encode("utf-8"))
+    assert result.diagnostics == []
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    seen = []
+    for value in (0, 1, 1, 0, 1):
+        engine.memory.set_bit(parse_absolute("%I0.0")[0], value)
+        engine.scan()
+        seen.append(engine.memory.bit(parse_absolute("%Q0.0")[0]))
+    assert seen == [0, 1, 0, 0, 1]
