@@ -36,7 +36,7 @@ from ladderworks.core.dialects.s7.xml_forms import (
     pin_in,
 )
 from ladderworks.core.dialects.s7.xml_safe import Element, XmlRefused, parse
-from ladderworks.core.dialects.s7.xml_text import component, source_text
+from ladderworks.core.dialects.s7.xml_text import component, graph_text, source_text
 
 BLOCK_KINDS = {"SW.Blocks.OB": "OB", "SW.Blocks.FB": "FB", "SW.Blocks.FC": "FC",
                "SW.Blocks.GlobalDB": "GlobalDB", "SW.Blocks.InstanceDB": "InstanceDB"}
@@ -250,9 +250,9 @@ class _Reader:
             if network.language not in ("LAD", "FBD"):
                 network.language = "LAD"
         else:
-            network.source = source_text(body)
+            network.source = graph_text(body) if body.name == "Graph" else source_text(body)
             if network.language in ("LAD", "FBD"):
-                network.language = "SCL" if body.name == "StructuredText" else "STL"
+                network.language = {"StructuredText": "SCL", "Graph": "GRAPH"}.get(body.name, "STL")
         return network
 
     def flgnet(self, block: Block, index: int, network: S7Network, net: Element) -> None:

@@ -235,3 +235,16 @@ def test_a_lad_pbox_is_p_trig_and_is_written_back_as_pbox() -> None:
         engine.scan()
         seen.append(engine.memory.bit(parse_absolute("%Q0.0")[0]))
     assert seen == [0, 1, 0, 0, 1]
+
+
+def test_a_graph_block_opens_shows_its_sequence_and_is_not_simulated() -> None:
+    path = Path(__file__).parent / "data" / "graph" / "Sira.xml"
+    [network] = read_document(path.read_bytes()).blocks[0].networks
+    assert network.language == "GRAPH"
+    assert network.source.splitlines() == [
+        "GRAPH Dolum sırası", "S1 Doldur (initial)", "S2 Bosalt", "T1 Dolu: S1 -> S2",
+        "T2 Bos: S2 -> S1 (jump)"]
+    result = parse_file(path)
+    assert [(d.code, d.severity, d.args.get("language")) for d in result.diagnostics] == [
+        ("s7-not-simulated", Severity.WARNING, "GRAPH")]
+    assert compile_program(result.program).binary is not None
