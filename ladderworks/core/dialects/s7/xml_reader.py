@@ -130,15 +130,17 @@ class _Reader:
     def run(self) -> XmlRead:
         engineering = self.root.child("Engineering")
         self.out.version = engineering.attrs.get("version", "") if engineering else ""
+        tables = 0  # an empty tag table (TIA's "Default tag table" often is) is no error
         for node in self.root.children:  # blocks and tag tables are the Document's children
             kind = BLOCK_KINDS.get(node.name)
             if kind is not None:
                 self.out.blocks.append(self.block(node, kind))
             elif node.name == "SW.Tags.PlcTagTable":
                 self.tag_table(node)
+                tables += 1
             elif node.name == "SW.Types.PlcStruct":  # a PLC data type (UDT): its members
                 self.out.blocks.append(self.plc_type(node))
-        if not self.out.blocks and not self.out.tags:
+        if not self.out.blocks and not self.out.tags and not tables:
             self.error("s7xml-empty", self.root.line)
         return self.out
 

@@ -13,6 +13,7 @@ from pathlib import Path
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.diagnostics import Severity
 from ladderworks.core.dialects.s7.devices import parse_absolute
+from ladderworks.core.dialects.s7.tags import read_tag_table
 from ladderworks.core.dialects.s7.xml_reader import is_simaticml, read_document
 from ladderworks.core.dialects.s7.xml_writer import flgnet_lines
 from ladderworks.core.il.reading import parse_bytes, parse_file
@@ -248,3 +249,14 @@ def test_a_graph_block_opens_shows_its_sequence_and_is_not_simulated() -> None:
     assert [(d.code, d.severity, d.args.get("language")) for d in result.diagnostics] == [
         ("s7-not-simulated", Severity.WARNING, "GRAPH")]
     assert compile_program(result.program).binary is not None
+
+
+def test_an_empty_tag_table_is_read_as_empty_not_refused() -> None:
+    """TIA's "Default tag table" of a new project has no tag: an empty table, no error."""
+    table = ('<?xml version="1.0" encoding="utf-8"?>\n<Document>\n  <Engineering version="V17" />'
+             '\n  <SW.Tags.PlcTagTable ID="0">\n    <AttributeList>\n      <Name>Varsayılan'
+             '</Name>\n    </AttributeList>\n  </SW.Tags.PlcTagTable>\n</Document>')
+    assert read_tag_table(table) == ([], [])
+    found = read_document(table)
+    assert (found.blocks, found.tags, found.diagnostics) == ([], [], [])
+    assert read_tag_table("<Document />")[1][0].code == "s7-tags"  # no table at all
