@@ -10,7 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ladderworks.core.diagnostics import Diagnostic, Severity
-from ladderworks.core.dialects.s7 import reader
+from ladderworks.core.dialects.s7 import reader, vci
 from ladderworks.core.dialects.s7.graph import Block, S7Program, Tag
 from ladderworks.core.dialects.s7.sd_parser import Parsed
 from ladderworks.core.dialects.s7.texts import read_texts
@@ -45,8 +45,8 @@ def _is_block_file(path: Path, kinds: tuple[str, ...] = ("SW.Blocks.",)) -> bool
 
 def wants(path: Path, data: bytes | None) -> bool:
     """True when `path` is a SimaticML block document, or a folder whose blocks are XML only."""
-    if path.is_dir():
-        files = [p for p in path.iterdir() if p.is_file()]
+    if path.is_dir():  # a folder of exports, or a folder of a TIA VCI workspace (vci.py)
+        files = vci.files(path)
         return not any(p.suffix.lower() in reader.SD_SUFFIXES for p in files) and \
             any(_is_block_file(p) for p in files)
     head = data[:200000].decode("utf-8", "replace") if data is not None else _head(path)
@@ -76,7 +76,7 @@ def _companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic],
     tags: list[Tag] = []
     texts: dict[str, dict[str, str]] = {}
     sd: list[Parsed] = []
-    for path in sorted(p for p in folder.iterdir() if p.is_file() and p != entry):
+    for path in (p for p in vci.files(folder) if p != entry):
         suffix = path.suffix.lower()
         if suffix == ".xml":
             found = _read_file(path, diagnostics)
@@ -139,7 +139,7 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     extra: dict[str, str] = {}
     blocks, tags, texts, sd = _companions(folder, entry, diagnostics, extra)
     if entry is None:
-        owners = [p for p in sorted(folder.iterdir()) if _is_block_file(p)]
+        owners = [p for p in vci.files(folder) if _is_block_file(p)]
         entry = next((p for p in owners if "SW.Blocks.OB" in _head(p)), None) or \
             next((p for p in owners if any(f"SW.Blocks.{k}" in _head(p) for k in CODE)), None)
         if entry is None:

@@ -260,3 +260,33 @@ def test_an_empty_tag_table_is_read_as_empty_not_refused() -> None:
     found = read_document(table)
     assert (found.blocks, found.tags, found.diagnostics) == ([], [], [])
     assert read_tag_table("<Document />")[1][0].code == "s7-tags"  # no table at all
+
+
+def _tag_table(*tags: tuple[str, str, str]) -> str:
+    rows = "".join(f'<SW.Tags.PlcTag ID="{n + 1}" CompositionName="Tags"><AttributeList>'
+                   f"<DataTypeName>{kind}</DataTypeName><LogicalAddress>{address}"
+                   f"</LogicalAddress><Name>{name}</Name></AttributeList></SW.Tags.PlcTag>"
+                   for n, (name, kind, address) in enumerate(tags))
+    return ('<?xml version="1.0" encoding="utf-8"?>\n<Document><SW.Tags.PlcTagTable ID="0">'
+            "<AttributeList><Name>Default tag table</Name></AttributeList><ObjectList>"
+            f"{rows}</ObjectList></SW.Tags.PlcTagTable></Document>")
+
+
+def test_a_block_of_a_vci_workspace_reads_the_tags_of_its_plc_folder(tmp_path: Path) -> None:
+    """TIA's Version Control Interface keeps `PLC_1/Program blocks/Main.xml` and
+    `PLC_1/PLC tags/Default tag table.xml`: opening the block (or either folder) reads both."""
+    body = ("<Parts>" + tag(21, "Basla") + tag(22, "Lamba") +
+            '<Part Name="Contact" UId="30" /><Part Name="Coil" UId="31" /></Parts><Wires>' +
+            wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+            wire(42, "30:out", "31:in") + wire(43, "22", "31:operand") + "</Wires>")
+    blocks = tmp_path / "PLC_1" / "Program blocks" / "Motor"
+    blocks.mkdir(parents=True)
+    (blocks / "Main.xml").write_text(document([body]), "utf-8")
+    table = tmp_path / "PLC_1" / "PLC tags"
+    table.mkdir()
+    (table / "Default tag table.xml").write_text(
+        _tag_table(("Basla", "Bool", "%I0.0"), ("Lamba", "Bool", "%Q0.0")), "utf-8")
+    for opened in (blocks / "Main.xml", blocks, table):
+        result = parse_file(opened)
+        assert result.diagnostics == [], [d.message() for d in result.diagnostics]
+        assert result.program.symbols.by_symbol['"Lamba"'] == parse_absolute("%Q0.0")[0]
