@@ -190,13 +190,15 @@ class Block:
 
 @dataclass(frozen=True, slots=True)
 class Tag:
-    """One PLC tag: name, data type, logical address (%I0.0, %MW2; "" if none), comment."""
+    """One PLC tag: name, data type, logical address (%I0.0, %MW2; "" if none), comment; a
+    user constant of a tag table (`SW.Tags.PlcUserConstant`) has its `value` instead."""
 
     name: str
     type_name: str
     address: str = ""
     comment: str = ""
     table: str = ""
+    value: str = ""
 
 
 @dataclass(slots=True)

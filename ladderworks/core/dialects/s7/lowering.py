@@ -153,9 +153,8 @@ class BlockLowering:
 
     def shown_only(self, index: int, where: Part, power: Expr, code: str, **args: object
                    ) -> Expr:
-        """A part LadderWorks does not simulate, kept in its network: a warning at its network
-        and part; its ENO (`out`, `eno`) follows its EN, its other outputs give no power and
-        the operands it would write are left as they are [LW]."""
+        """A part not simulated, kept: a warning at its network and part; its ENO (`out`, `eno`)
+        follows its EN, its other outputs give no power, its operands stay as they are [LW]."""
         self.shown.add(where.uid)
         self.diagnostics.append(Diagnostic(code, {"network": index, "uid": where.uid, **args},
                                            where.line, 1, Severity.WARNING))
@@ -195,6 +194,7 @@ class BlockLowering:
         return ("bit", ALWAYS_OFF, False)
 
     def bit_expr(self, operand: Operand, negated: bool, index: int, part: Part) -> Expr:
+        operand = system_tags.constant_of(self.layout.program, operand) or operand
         if operand.kind is OperandKind.CONSTANT:
             on = operand.text.upper() in ("TRUE", "1")
             return ("bit", ALWAYS_ON if on != negated else ALWAYS_OFF, False)
@@ -334,6 +334,7 @@ class BlockLowering:
               pin: str) -> ParamValue:
         if operand is None:
             raise self.fail(index, part, "s7-pin-missing", part=part.name, pin=pin.upper())
+        operand = system_tags.constant_of(self.layout.program, operand) or operand
         if operand.kind is OperandKind.CONSTANT:
             found: ParamValue | None = constant_value(operand.text, vtype)
             if found is None and vtype is typed.ValueType.LREAL:

@@ -54,6 +54,8 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
         table.add(address, Symbol(name, (comment,) if comment else ()))
 
     for tag in program.tags:
+        if tag.value:  # a user constant: no place, its value is used where it is named
+            continue
         place = layout.global_name((tag.name,))
         if place is not None:
             head, dot, rest = tag.name.partition(".")  # a member of a DB not read: "DB".a

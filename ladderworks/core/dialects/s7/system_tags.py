@@ -64,3 +64,17 @@ def declare(program: S7Program, operand: Operand, guess: str) -> str:
         address = ""
     program.tags.append(Tag(name, guess, address, "", UNDECLARED))
     return address or guess
+
+
+def constant_of(program: S7Program, operand: Operand) -> Operand | None:
+    """A user constant of the tag tables (`"MAX_COUNT"`, `GlobalConstant` in SimaticML) named
+    by `operand`, as the constant it stands for; None for anything else."""
+    if operand.kind is not OperandKind.GLOBAL or len(operand.path) != 1:
+        return None
+    tag = program.tag(operand.path[0])
+    if tag is None or not tag.value:
+        return None
+    value = tag.value.strip()
+    if value.upper() in ("TRUE", "FALSE"):
+        return Operand(OperandKind.CONSTANT, (), value.upper(), "Bool")
+    return Operand(OperandKind.CONSTANT, (), value, tag.type_name)

@@ -66,10 +66,11 @@ def read_tag_table(text: str) -> tuple[list[Tag], list[Diagnostic]]:
         if name == "SW.Tags.PlcTagTable":
             table = _text(element, "Name")
             tables += 1
-        elif name == "SW.Tags.PlcTag":
+        elif name in ("SW.Tags.PlcTag", "SW.Tags.PlcUserConstant"):  # a constant: its Value
             attributes = next((c for c in element if _local(c.tag) == "AttributeList"), element)
             tags.append(Tag(_text(attributes, "Name"), _text(attributes, "DataTypeName"),
-                            _text(attributes, "LogicalAddress"), _comment(element), table))
+                            _text(attributes, "LogicalAddress"), _comment(element), table,
+                            _text(attributes, "Value")))
     if not tags and not tables:  # an empty table (no tag yet) is read as empty
         return [], [Diagnostic("s7-tags", {"why": "no SW.Tags.PlcTag in it"}, 1, 1)]
     return tags, []

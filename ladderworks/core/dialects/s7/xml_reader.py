@@ -149,12 +149,13 @@ class _Reader:
         table = node.find("AttributeList", "Name")
         name = table.text.strip() if table is not None else ""
         for tag in node.walk():
-            if tag.name == "SW.Tags.PlcTag":
+            if tag.name in ("SW.Tags.PlcTag", "SW.Tags.PlcUserConstant"):
                 attributes = tag.child("AttributeList") or tag
                 comment = _chosen(_texts(tag).get("Comment", {}))
                 self.out.tags.append(Tag(attributes.text_of("Name"),
                                          attributes.text_of("DataTypeName"),
-                                         attributes.text_of("LogicalAddress"), comment, name))
+                                         attributes.text_of("LogicalAddress"), comment, name,
+                                         attributes.text_of("Value")))
 
     # -- blocks ---------------------------------------------------------------------------
     def block(self, node: Element, kind: str) -> Block:

@@ -290,3 +290,37 @@ def test_a_block_of_a_vci_workspace_reads_the_tags_of_its_plc_folder(tmp_path: P
         result = parse_file(opened)
         assert result.diagnostics == [], [d.message() for d in result.diagnostics]
         assert result.program.symbols.by_symbol['"Lamba"'] == parse_absolute("%Q0.0")[0]
+
+
+def test_a_user_constant_of_a_tag_table_is_its_value(tmp_path: Path) -> None:
+    """`SW.Tags.PlcUserConstant` (Name, DataTypeName, Value) named by a `GlobalConstant`
+    access: the value, in a compare and as a contact's Bool; no place of its own."""
+    (tmp_path / "Sabitler.xml").write_text(
+        '<?xml version="1.0" encoding="utf-8"?>\n<Document><SW.Tags.PlcTagTable ID="0">'
+        "<AttributeList><Name>Sabitler</Name></AttributeList><ObjectList>"
+        '<SW.Tags.PlcUserConstant ID="1" CompositionName="UserConstants"><AttributeList>'
+        "<DataTypeName>Int</DataTypeName><Name>SINIR</Name><Value>7</Value></AttributeList>"
+        '</SW.Tags.PlcUserConstant><SW.Tags.PlcUserConstant ID="2" CompositionName='
+        '"UserConstants"><AttributeList><DataTypeName>Bool</DataTypeName><Name>ACIK</Name>'
+        "<Value>True</Value></AttributeList></SW.Tags.PlcUserConstant></ObjectList>"
+        "</SW.Tags.PlcTagTable></Document>", "utf-8")
+    body = ("<Parts>" + _abs(21, "Memory", 16).replace('Type="Bool"', 'Type="Int"') +
+            '<Access Scope="GlobalConstant" UId="22"><Constant Name="SINIR" /></Access>'
+            '<Access Scope="GlobalConstant" UId="23"><Constant Name="ACIK" /></Access>' +
+            _abs(24, "Output", 0) +
+            '<Part Name="Gt" UId="30"><TemplateValue Name="SrcType" Type="Type">Int'
+            '</TemplateValue></Part><Part Name="Contact" UId="31" /><Part Name="Coil" UId="32" />'
+            "</Parts><Wires>" + wire(40, "rail", "30:pre") + wire(41, "21", "30:in1") +
+            wire(42, "22", "30:in2") + wire(43, "30:out", "31:in") + wire(44, "23", "31:operand") +
+            wire(45, "31:out", "32:in") + wire(46, "24", "32:operand") + "</Wires>")
+    (tmp_path / "Main.xml").write_text(document([body]), "utf-8")
+    result = parse_file(tmp_path / "Main.xml")
+    assert result.diagnostics == [], [d.message() for d in result.diagnostics]
+    assert '"SINIR"' not in result.program.symbols.by_symbol
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    for value, lamp in ((7, 0), (8, 1)):
+        engine.memory.write(parse_absolute("%MW2")[0], value, 2)
+        engine.scan()
+        assert engine.memory.bit(parse_absolute("%Q0.0")[0]) == lamp
