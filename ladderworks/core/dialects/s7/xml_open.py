@@ -140,7 +140,8 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     blocks, tags, texts, sd = _companions(folder, entry, diagnostics, extra)
     if entry is None:
         owners = [p for p in vci.files(folder) if _is_block_file(p)]
-        entry = next((p for p in owners if "SW.Blocks.OB" in _head(p)), None) or \
+        obs = [p for p in owners if "SW.Blocks.OB" in _head(p)]  # OB1 first, else any OB
+        entry = next((p for p in obs if _number(p) == 1), obs[0] if obs else None) or \
             next((p for p in owners if any(f"SW.Blocks.{k}" in _head(p) for k in CODE)), None)
         if entry is None:
             diagnostics.append(Diagnostic("s7xml-empty", {}, 0, 0))
@@ -185,3 +186,9 @@ def _attach(program: Program, graph: S7Program, found: XmlRead, data: bytes) -> 
 def _names(path: Path) -> set[str]:
     found = _read_file(path, [])
     return {b.name for b in found.blocks} if found is not None else set()
+
+
+def _number(path: Path) -> int:
+    """The number of a document's first block (0 when it has none)."""
+    found = _read_file(path, [])
+    return found.blocks[0].number if found is not None and found.blocks else 0

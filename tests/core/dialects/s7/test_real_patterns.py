@@ -324,3 +324,18 @@ def test_a_user_constant_of_a_tag_table_is_its_value(tmp_path: Path) -> None:
         engine.memory.write(parse_absolute("%MW2")[0], value, 2)
         engine.scan()
         assert engine.memory.bit(parse_absolute("%Q0.0")[0]) == lamp
+
+
+def test_a_folder_with_several_obs_runs_ob1(tmp_path: Path) -> None:
+    """A PLC's folder holds OB1 and e.g. OB86 (a rack failure OB): OB1 is the program run,
+    whatever the files' names."""
+    body = ("<Parts>" + _abs(21, "Input", 0) + _abs(22, "Output", 0) +
+            '<Part Name="Contact" UId="30" /><Part Name="Coil" UId="31" /></Parts><Wires>' +
+            wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+            wire(42, "30:out", "31:in") + wire(43, "22", "31:operand") + "</Wires>")
+    fault = document([], name="RACK_FLT").replace("<Number>1</Number>", "<Number>86</Number>")
+    (tmp_path / "A_RACK_FLT.xml").write_text(fault, "utf-8")
+    (tmp_path / "Z_Main.xml").write_text(document([body]), "utf-8")
+    result = parse_file(tmp_path)
+    assert result.program.title == {1: "Main"}
+    assert [i.name for n in result.program.networks for i in n.instructions] == ["RD", "WRT"]
