@@ -59,6 +59,12 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                                                  place.address), line=line)]
         return lowering.statement(part, [power], code, lowering.keep(graph, part))
     vtype = lowering.vtype(index, graph, part, ("in1", "in2", "out"))
+    kinds = _declared(lowering, graph, part, ("in1", "in2", "out"))
+    if not any(key.lower() == "srctype" for key in part.template) and len(kinds) > 1:
+        # an automatically typed box on operands of several types: TIA converts them to
+        # one type; LadderWorks does not, so the box is not simulated [LW]
+        raise lowering.fail(index, part, "s7-type", part=part.name,
+                            type=" / ".join(sorted(k.name.title() for k in kinds)))
     first = lowering.value(index, part, graph.operand_in.get((part.uid, "in1")), vtype, "in1")
     second = lowering.value(index, part, graph.operand_in.get((part.uid, "in2")), vtype, "in2")
     outs = graph.operand_out.get((part.uid, "out"), [])
@@ -134,3 +140,18 @@ def jump_table(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
             raise lowering.fail(index, part, "s7-label-unknown", label=otherwise)
         lowering.emit([Instruction("RD", keep, line=line),
                    Instruction("S7.JMP", None, (LabelRef(target),), line=line)])
+
+
+def _declared(lowering: BlockLowering, graph: PinGraph, part: Part, pins: tuple[str, ...]
+              ) -> set[typed.ValueType]:
+    """The declared types of the tags and members wired to a box's pins."""
+    found: set[typed.ValueType] = set()
+    for pin in pins:
+        operand = graph.operand_in.get((part.uid, pin)) or next(
+            iter(graph.operand_out.get((part.uid, pin), [])), None)
+        if operand is None or operand.kind not in (OperandKind.GLOBAL, OperandKind.LOCAL):
+            continue
+        place = lowering.layout.resolve(lowering.block, operand, "", lowering.scope)
+        if place is not None and place.vtype is not None:
+            found.add(place.vtype)
+    return found

@@ -339,3 +339,34 @@ def test_a_folder_with_several_obs_runs_ob1(tmp_path: Path) -> None:
     result = parse_file(tmp_path)
     assert result.program.title == {1: "Main"}
     assert [i.name for n in result.program.networks for i in n.instructions] == ["RD", "WRT"]
+
+
+def test_an_automatically_typed_add_on_mixed_types_is_not_simulated() -> None:
+    """`<Part Name="Add" DisabledENO="true">` with `<AutomaticTyped Name="SrcType"/>` and no
+    SrcType: on Int + Real TIA converts, LadderWorks does not (warning); on Int + Int it runs."""
+    interface = ('<Section Name="Input"><Member Name="a" Datatype="Int" />'
+                 '<Member Name="b" Datatype="Real" /><Member Name="c" Datatype="Int" />'
+                 '</Section><Section Name="Output"><Member Name="s" Datatype="Real" />'
+                 '<Member Name="t" Datatype="Int" /></Section>')
+
+    def add(first: str, second: str, out: str) -> str:
+        return ("<Parts>" + tag(21, first, scope="LocalVariable") +
+                tag(22, second, scope="LocalVariable") + tag(23, out, scope="LocalVariable") +
+                '<Part Name="Add" UId="30" DisabledENO="true"><TemplateValue Name="Card" '
+                'Type="Cardinality">2</TemplateValue><AutomaticTyped Name="SrcType" /></Part>'
+                "</Parts><Wires>" + wire(40, "rail", "30:en") + wire(41, "21", "30:in1") +
+                wire(42, "22", "30:in2") + wire(43, "30:out", "23") + "</Wires>")
+
+    text = document([add("a", "b", "s"), add("a", "c", "t")], interface=interface, kind="FC",
+                    name="funkce")
+    result = parse_bytes(text.encode("utf-8"))
+    assert [(d.code, d.severity, d.args["network"], d.args["type"])
+            for d in result.diagnostics] == [("s7-type", Severity.WARNING, 1, "Int / Real")]
+    symbols = result.program.symbols.by_symbol
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    engine.memory.write(symbols["#a"], 2, 2)
+    engine.memory.write(symbols["#c"], 3, 2)
+    engine.scan()
+    assert engine.memory.read(symbols["#t"], 2) == 5
