@@ -34,9 +34,11 @@ def files(folder: Path) -> list[Path]:
     if top is None:
         return sorted(p for p in folder.iterdir() if p.is_file())
     found: list[Path] = []
+    visited = 0
     for place, dirs, names in os.walk(top):
         dirs.sort()
+        visited += 1 + len(dirs)
         found += [Path(place) / name for name in sorted(names)]
-        if len(found) >= MAX_FILES:
+        if len(found) >= MAX_FILES or visited >= MAX_FILES:  # folders count too: no long walk
             break
     return found[:MAX_FILES]
