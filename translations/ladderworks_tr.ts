@@ -1582,6 +1582,11 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
+        <translation>{block}, network {network}: &apos;{scope}&apos; kapsamlı UId {uid} erişimi LadderWorks&apos;ün okuduğu hiçbir şeyi adlandırmıyor; ona bağlı parçalar benzetilmiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>

@@ -534,6 +534,9 @@ MESSAGES: dict[str, str] = {
     "s7xml-too-many": QT_TRANSLATE_NOOP(
         "Diagnostic", "{block}, network {network}: more than {limit} parts; the network is "
         "not read"),
+    "s7xml-access": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: access UId {uid} of scope '{scope}' names "
+        "nothing LadderWorks reads; the parts wired to it are not simulated"),
     "s7xml-call-missing": QT_TRANSLATE_NOOP(
         "Diagnostic", "{block}, network {network}: part UId {uid} calls '{callee}', which is "
         "not in the program"),

@@ -52,8 +52,8 @@ class Operand:
 
     def display(self) -> str:
         """The operand as TIA writes it: "Start", #Timer.Q, %I0.0, T#10s."""
-        if self.kind is OperandKind.CONSTANT:
-            return self.text
+        if self.kind is OperandKind.CONSTANT or (not self.path and self.text):
+            return self.text  # a constant; an access the reader could not name: its scope
         if self.kind is OperandKind.ABSOLUTE:
             return self.path[0] if self.path else self.text
         if self.kind is OperandKind.LOCAL:

@@ -278,7 +278,11 @@ class _Reader:
                     accesses[uid] = (None, label.attrs.get("Name", "") if label else "",
                                      node.line)
                 else:
-                    accesses[uid] = (self.operand(node), "", node.line)
+                    operand = self.operand(node)
+                    if operand.kind is not OperandKind.CONSTANT and not operand.path:
+                        operand = Operand(operand.kind, (), f"<{scope}>")  # named in the lowering
+                        self.warn("s7xml-access", node.line, uid=uid, scope=scope, **where)
+                    accesses[uid] = (operand, "", node.line)
             elif node.name in ("Part", "Call"):
                 if len(network.parts) >= MAX_PARTS:
                     self.error("s7xml-too-many", node.line, limit=MAX_PARTS, **where)

@@ -370,3 +370,15 @@ def test_an_automatically_typed_add_on_mixed_types_is_not_simulated() -> None:
     engine.memory.write(symbols["#c"], 3, 2)
     engine.scan()
     assert engine.memory.read(symbols["#t"], 2) == 5
+
+
+def test_an_access_of_a_scope_not_read_is_named_and_its_network_left_out() -> None:
+    body = ('<Parts><Access Scope="Indirect" UId="21" />' + _abs(22, "Output", 0) +
+            '<Part Name="Contact" UId="30" /><Part Name="Coil" UId="31" /></Parts><Wires>' +
+            wire(40, "rail", "30:in") + wire(41, "21", "30:operand") +
+            wire(42, "30:out", "31:in") + wire(43, "22", "31:operand") + "</Wires>")
+    result = parse_bytes(document([body]).encode("utf-8"))
+    found = [(d.code, d.severity) for d in result.diagnostics]
+    assert found == [("s7xml-access", Severity.WARNING), ("s7-operand-unknown", Severity.WARNING)]
+    assert "Indirect" in result.diagnostics[0].message()
+    assert "<Indirect>" in result.diagnostics[1].message()
