@@ -4,7 +4,7 @@
 
 For each `.xml` / `.s7dcl` / `.db` file (and each folder holding some) it prints whether it
 opened (no crash, no diagnostic that stops the reading), the entry block's networks — lowered
-to the engine, shown as SCL/STL text, empty, or left out by an error — and the diagnostics
+to the engine, shown as SCL/STL/GRAPH text, empty, or left out (LEFT_OUT) — and the diagnostics
 counted by code; then the totals. The exports are never copied into the project: point it at
 a folder outside (docs/dialects.md, "Real exports tried").
 """
@@ -25,6 +25,12 @@ SUFFIXES = (".xml", ".s7dcl", ".db", ".udt", ".scl")
 # a diagnostic with one of these codes means the file (or folder) was not read at all
 FATAL = frozenset({"s7xml-empty", "s7xml-malformed", "s7xml-dtd", "s7xml-too-large",
                    "s7-syntax", "s7-cut", "s7-too-large", "s7-tags"})
+# a diagnostic with one of these codes leaves its network out of the program (whatever its
+# severity: an error before, a warning since "Real exports tried"); a shown-only part or call
+# (s7-part-unknown, s7-call-unknown) or an undeclared tag leaves the rest of the network running
+LEFT_OUT = frozenset({"s7-operand-unknown", "s7-pin-missing", "s7-wire", "s7-label-unknown",
+                      "s7-type", "s7-memory-full", "s7xml-wire", "s7xml-loop", "s7xml-namespace",
+                      "s7xml-too-many"})
 
 
 @dataclass(slots=True)
@@ -63,7 +69,8 @@ def try_one(path: Path) -> Tried:
     block = getattr(source, "block", None)
     if block is None:  # no code block (a DB or tag table alone): nothing to lower
         return tried
-    failing = {_network_of(d) for d in diagnostics if d.severity is Severity.ERROR}
+    failing = {_network_of(d) for d in diagnostics
+               if d.code in LEFT_OUT or (d.severity is Severity.ERROR and d.code not in FATAL)}
     for index, network in enumerate(block.networks, start=1):
         tried.networks += 1
         if network.language.upper() not in ("LAD", "FBD"):
