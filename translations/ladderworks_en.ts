@@ -150,77 +150,92 @@
 <context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="280"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="264"/>
+        <source>{0} has {1} bytes: a box shows a byte or a word (the time chart shows any value)</source>
+        <translation>{0} has {1} bytes: a box shows a byte or a word (the time chart shows any value)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="339"/>
         <source>Forced to {0}</source>
         <translation>Forced to {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Click: force to the other value; right-click: force menu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="360"/>
         <source>Load a program to force inputs</source>
         <translation>Load a program to force inputs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="377"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="382"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="387"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Stopped</source>
         <translation>Stopped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="349"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="408"/>
         <source>PLC bit display</source>
         <translation>PLC bit display</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="350"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="409"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="410"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="352"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="412"/>
+        <source>Tag or address</source>
+        <translation>Tag or address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="413"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="414"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="415"/>
         <source>Dec</source>
         <translation>Dec</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="417"/>
+        <source>e.g. &quot;Start&quot;, %MW2</source>
+        <translation>e.g. &quot;Start&quot;, %MW2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="418"/>
         <source>e.g. X12</source>
         <translation>e.g. X12</translation>
     </message>
@@ -228,132 +243,132 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
         <source>Contact</source>
         <translation>Contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
         <source>NOT contact</source>
         <translation>NOT contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
         <source>Coil</source>
         <translation>Coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="70"/>
         <source>NOT coil</source>
         <translation>NOT coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="70"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="71"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="72"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="83"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
         <source>Read</source>
         <translation>Read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
         <source>Write</source>
         <translation>Write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="87"/>
         <source>Read and write</source>
         <translation>Read and write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="93"/>
         <source>Level {0}</source>
         <translation>Level {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
         <source>Network</source>
         <translation>Network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
         <source>Label</source>
         <translation>Label</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="135"/>
         <source>Program part</source>
         <translation>Program part</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="136"/>
         <source>Element</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="136"/>
         <source>Access</source>
         <translation>Access</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="137"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
         <source>All addresses — uses: {0}</source>
         <translation>All addresses — uses: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="282"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="321"/>
         <source>{0} is not used in the program</source>
         <translation>{0} is not used in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="324"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="344"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="311"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="350"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Address or symbol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="308"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="347"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Cross &amp;reference of this address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="309"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="348"/>
         <source>List every place the program reads and writes the address</source>
         <translation>List every place the program reads and writes the address</translation>
     </message>
@@ -627,966 +642,1051 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>no function box with FO outputs at cell ({row}, {col})</source>
+        <translation>no function box with FO outputs at cell ({row}, {col})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
         <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
         <translation>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
         <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
         <translation>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
         <source>END ends the program and stays its last network: draw new networks above it</source>
         <translation>END ends the program and stays its last network: draw new networks above it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} would be replaced with itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also in network {other})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII format: the text opened by {quote} is never closed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII format: a repeat count must be 1 to 999, found {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII format: text after END: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII format: END is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; is not a Fatek instruction</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
         <source>{name} needs a device</source>
         <translation>{name} needs a device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; is not a Fatek device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} cannot take &apos;{text}&apos; (use {kinds})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; is out of range ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} with nothing before it: a network starts with ORG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} needs two blocks: start the second one with LD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} is set twice in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>a network has at most {limit} TR points</source>
         <translation>a network has at most {limit} TR points</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>LD TR{number} before OUT TR{number} in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} on the left rail: put ORG SHORT before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number} is not a Fatek function LadderWorks knows</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: the operand line {param} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} takes no more operands, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} is kept and drawn but not simulated: its outputs stay 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos; is not the time base of {name} ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: no function output here (FO0-FO7 after a box)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
         <translation>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
         <translation>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
         <translation>&apos;{text}&apos; is not a Fatek device: the line is skipped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
         <translation>the comments were read in code page {chosen}; they read as {others} too: check the names</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
         <translation>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>the .pdw file is cut short: its record at byte {offset} runs past the end</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>the .pdw file is damaged: the record at byte {offset} fails its checksum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>the .pdw file is damaged: the record at byte {offset} is malformed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>the .pdw file holds no program (checked up to byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>the .pdw file is damaged: its program image is wrong at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>the program ends inside an instruction at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
         <translation>{name} is kept and drawn but not simulated: the scan passes it by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
         <translation>{count} instructions are not simulated, the scan passes them by (line): {names}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
         <translation>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>{name}: operand {index} is missing</source>
         <translation>{name}: operand {index} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>step {step} is not after step {previous}: the step numbers must grow</source>
         <translation>step {step} is not after step {previous}: the step numbers must grow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="347"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="353"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="359"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>byte {offset}: the program does not end with END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>byte {offset} (step {step}): instructions after END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>byte {offset}: a text section of the .dvp project is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>byte {offset}: a device comment line is not DEVICE$&amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>the project holds no program: no compiled instruction list and an empty ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>the project was saved without compiling: its program is read from its ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="383"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>NEXT without a FOR before it</source>
         <translation>NEXT without a FOR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MC or STL without its MCR or RET after it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>MCR or RET without its MC or STL before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
         <source>FOR without its NEXT</source>
         <translation>FOR without its NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="403"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="423"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="440"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="443"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="461"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="460"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="462"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="463"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <source>&apos;{text}&apos; is neither a name of the program nor an address</source>
+        <translation>&apos;{text}&apos; is neither a name of the program nor an address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <source>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</source>
+        <translation>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <source>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</source>
+        <translation>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <source>the value has {length} characters: at most {limit} are read</source>
+        <translation>the value has {length} characters: at most {limit} are read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
+        <source>no modify value to write</source>
+        <translation>no modify value to write</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
+        <translation>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="475"/>
+        <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
+        <translation>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="477"/>
+        <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
+        <translation>&apos;{text}&apos; is out of range: {low} to {high}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
+        <translation>&apos;{text}&apos; is not a real number (e.g. 1.5)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
+        <translation>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
+        <translation>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
+        <translation>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="486"/>
+        <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
+        <translation>&apos;{text}&apos; is longer than the string&apos;s {length} characters</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="488"/>
+        <source>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</source>
+        <translation>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: the text ends inside {what} (cut off?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} needs its pin {pin}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: the wiring of {part} cannot be followed ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: there is no label &apos;{label}&apos; in this block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="509"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: a {language} network is shown, not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: the block &apos;{block}&apos; it calls is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
         <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
         <translation>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
+        <translation>network {network}, row {row}, column {column}: the contact or coil has no operand</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
+        <translation>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="517"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
         <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
         <translation>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
@@ -1652,19 +1752,19 @@
 <context>
     <name>FamilyWords</name>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="27"/>
-        <location filename="../ladderworks/gui/family_words.py" line="32"/>
-        <location filename="../ladderworks/gui/family_words.py" line="37"/>
+        <location filename="../ladderworks/gui/family_words.py" line="28"/>
+        <location filename="../ladderworks/gui/family_words.py" line="33"/>
+        <location filename="../ladderworks/gui/family_words.py" line="38"/>
         <source>e.g. {0}</source>
         <translation>e.g. {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="43"/>
+        <location filename="../ladderworks/gui/family_words.py" line="44"/>
         <source>Type the devices to watch, e.g. {0}</source>
         <translation>Type the devices to watch, e.g. {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="53"/>
+        <location filename="../ladderworks/gui/family_words.py" line="54"/>
         <source>FANUC PMC</source>
         <translation>FANUC PMC</translation>
     </message>
@@ -1806,52 +1906,83 @@
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="93"/>
         <source>Forced and passive</source>
         <translation>Forced and passive</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="95"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="95"/>
         <source>Signal / element</source>
         <translation>Signal / element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="96"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="76"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="98"/>
         <source>Release all</source>
         <translation>Release all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="99"/>
+        <source>&amp;Bit:</source>
+        <translation>&amp;Bit:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="100"/>
+        <source>an address or a tag</source>
+        <translation>an address or a tag</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="101"/>
+        <source>Force to 1</source>
+        <translation>Force to 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
+        <source>Force to 0</source>
+        <translation>Force to 0</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="118"/>
+        <source>{0} is not a bit: only bits are forced</source>
+        <translation>{0} is not a bit: only bits are forced</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="127"/>
+        <source>Load a program to force its bits</source>
+        <translation>Load a program to force its bits</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="145"/>
         <source>FORCED</source>
         <translation>FORCED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="152"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="158"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="169"/>
         <source>Release</source>
         <translation>Release</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="173"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} forced, {1} passive</translation>
     </message>
@@ -1986,7 +2117,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -1996,32 +2127,42 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="45"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <source>This instruction is not placed from the palette in this program</source>
+        <translation>This instruction is not placed from the palette in this program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
+        <source>Output pins</source>
+        <translation>Output pins</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="166"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="170"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -2031,63 +2172,71 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
+        <source>Operand, e.g. &quot;Start&quot;, %I0.1, #Run (// comment)</source>
+        <translation>Operand, e.g. &quot;Start&quot;, %I0.1, #Run (// comment)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="59"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="312"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="324"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="79"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="86"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="97"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="104"/>
         <source>open circuit here: draw a wire or an element</source>
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="74"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="75"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>
@@ -2100,32 +2249,32 @@
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
@@ -2135,144 +2284,154 @@
         <translation>&amp;New...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
+        <source>Open &amp;folder...</source>
+        <translation>Open &amp;folder...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>Import s&amp;ymbols...</source>
         <translation>Import s&amp;ymbols...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="92"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="13"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="93"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="95"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="14"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="102"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="105"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="110"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="115"/>
+        <source>Output pins (FO)…</source>
+        <translation>Output pins (FO)…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="118"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>Find pre&amp;vious</source>
         <translation>Find pre&amp;vious</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="134"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="145"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="146"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="151"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="159"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="156"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="161"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
@@ -2322,29 +2481,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="207"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="438"/>
+        <location filename="../ladderworks/gui/main_window.py" line="443"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="450"/>
+        <location filename="../ladderworks/gui/main_window.py" line="455"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="457"/>
+        <location filename="../ladderworks/gui/main_window.py" line="462"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="532"/>
-        <location filename="../ladderworks/gui/main_window.py" line="282"/>
-        <location filename="../ladderworks/gui/main_window.py" line="452"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
+        <location filename="../ladderworks/gui/main_window.py" line="284"/>
+        <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -2422,7 +2581,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="226"/>
         <location filename="../ladderworks/gui/file_actions.py" line="244"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="548"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="554"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
@@ -2448,133 +2607,134 @@
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="492"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="547"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="553"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="564"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="570"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="403"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="433"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
         <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="448"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="408"/>
+        <location filename="../ladderworks/gui/main_window.py" line="413"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="424"/>
+        <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="444"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="494"/>
+        <location filename="../ladderworks/gui/main_window.py" line="499"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="497"/>
+        <location filename="../ladderworks/gui/main_window.py" line="502"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="530"/>
+        <location filename="../ladderworks/gui/main_window.py" line="535"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="531"/>
+        <location filename="../ladderworks/gui/main_window.py" line="536"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2634,127 +2794,167 @@
         <source>The program cannot become a {0} program: {1}</source>
         <translation>The program cannot become a {0} program: {1}</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="50"/>
+        <source>Open a folder of exported blocks</source>
+        <translation>Open a folder of exported blocks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="60"/>
+        <source>{0}: no changes to save</source>
+        <translation>{0}: no changes to save</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
+        <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
+        <translation>{0} is a folder of exported blocks: save the changed program under a file name</translation>
+    </message>
 </context>
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="135"/>
         <source>Modbus server</source>
         <translation>Modbus server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="136"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Address (host:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="215"/>
         <source>&amp;Map file (CSV):</source>
         <translation>&amp;Map file (CSV):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="250"/>
         <source>the {0} map</source>
         <translation>the {0} map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="139"/>
         <source>Choose…</source>
         <translation>Choose…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="140"/>
         <source>Dialect&apos;s map</source>
         <translation>Dialect&apos;s map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="141"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
         <translation>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="143"/>
+        <source>&amp;Holding registers:</source>
+        <translation>&amp;Holding registers:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="145"/>
         <source>Clients connected:</source>
         <translation>Clients connected:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
         <source>Requests a second:</source>
         <translation>Requests a second:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Type the address as host:port, e.g. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>Cannot listen on {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
         <source>Modbus map file</source>
         <translation>Modbus map file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus maps (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="207"/>
+        <source>Bit memory (%MW)</source>
+        <translation>Bit memory (%MW)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="209"/>
+        <source>Data block {0}</source>
+        <translation>Data block {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="214"/>
+        <source>&amp;Map file (CSV) or DB:</source>
+        <translation>&amp;Map file (CSV) or DB:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>Cannot read the map {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="230"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="233"/>
         <source>The map {0} is not served:</source>
         <translation>The map {0} is not served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="246"/>
+        <source>the {0} map, holding registers in the DB {1}</source>
+        <translation>the {0} map, holding registers in the DB {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="249"/>
         <source>the file {0}</source>
         <translation>the file {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="272"/>
         <source>Stop server</source>
         <translation>Stop server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="273"/>
         <source>Start server</source>
         <translation>Start server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="277"/>
         <source>Map served:</source>
         <translation>Map served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="278"/>
         <source>Map to serve:</source>
         <translation>Map to serve:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="282"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="286"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Other computers on the network can read and write this PLC.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="291"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
     </message>
@@ -2816,6 +3016,19 @@
         <location filename="../ladderworks/gui/locale_numbers.py" line="18"/>
         <source>{0}%</source>
         <translation>{0}%</translation>
+    </message>
+</context>
+<context>
+    <name>OperandDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="17"/>
+        <source>Operands of {0}</source>
+        <translation>Operands of {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="20"/>
+        <source>As TIA Portal writes them: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</source>
+        <translation>As TIA Portal writes them: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</translation>
     </message>
 </context>
 <context>
@@ -2891,6 +3104,19 @@
         <location filename="../ladderworks/gui/os_errors.py" line="36"/>
         <source>system error: {0}</source>
         <translation>system error: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>OutputPinsDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/output_pins_dialog.py" line="38"/>
+        <source>Output pins</source>
+        <translation>Output pins</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/output_pins_dialog.py" line="39"/>
+        <source>The outputs {0} shows on its right side (FO0 is its first output, always shown); draw each pin&apos;s coils on its row:</source>
+        <translation>The outputs {0} shows on its right side (FO0 is its first output, always shown); draw each pin&apos;s coils on its row:</translation>
     </message>
 </context>
 <context>
@@ -3338,108 +3564,108 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="299"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="300"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="301"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="296"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="297"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="303"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="298"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="304"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="305"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="308"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="303"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="309"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Zoom out (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="304"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="310"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Zoom in (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="306"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="312"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="316"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="322"/>
         <source>{0} %</source>
         <translation>{0} %</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="387"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="166"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="399"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="401"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="403"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="444"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="482"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="488"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="492"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="498"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="502"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="508"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="105"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
@@ -3447,78 +3673,78 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>On-line mode</source>
         <translation>On-line mode</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
         <source>Make passive (disable)</source>
         <translation>Make passive (disable)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
         <source>Make active again</source>
         <translation>Make active again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="69"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="70"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="89"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="94"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line needs a compiled program in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="100"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="106"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="163"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="175"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="136"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="145"/>
         <source>Off-line: another program is shown; it is not the program the PLC runs</source>
         <translation>Off-line: another program is shown; it is not the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="198"/>
         <source>Select a contact, coil or function first</source>
         <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="202"/>
         <source>This element has no op in the PLC program</source>
         <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="225"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
     </message>
@@ -4322,7 +4548,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Scenario files (*.csv);;All files (*)</translation>
     </message>
@@ -4357,77 +4583,77 @@
         <translation>{0}: {1} of {2} checks failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
         <source>Save the recorded scenario</source>
         <translation>Save the recorded scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
         <source>recorded in LadderWorks</source>
         <translation>recorded in LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
         <source>Recording inputs and forces...</source>
         <translation>Recording inputs and forces...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="243"/>
         <source>Recorded {0} changes</source>
         <translation>Recorded {0} changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="251"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="252"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>PLC scenario</source>
         <translation>PLC scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
         <source>Run scenario...</source>
         <translation>Run scenario...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Record scenario</source>
         <translation>Record scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Expected</source>
         <translation>Expected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Got</source>
         <translation>Got</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Time (ms)</source>
         <translation>Time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
@@ -4498,147 +4724,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="45"/>
+        <location filename="../ladderworks/gui/family_words.py" line="46"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="206"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="218"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="230"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="243"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="426"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="445"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="453"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="478"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="519"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="524"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="546"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="547"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="548"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="549"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="553"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="558"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="560"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>
@@ -4872,12 +5098,27 @@
         <translation>Fatek FBs contacts</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="155"/>
+        <location filename="../ladderworks/gui/palette.py" line="36"/>
+        <source>Siemens S7-1200 instructions</source>
+        <translation>Siemens S7-1200 instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="37"/>
+        <source>S7-1200 program structure</source>
+        <translation>S7-1200 program structure</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="38"/>
+        <source>S7-1200 contacts</source>
+        <translation>S7-1200 contacts</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="158"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="156"/>
+        <location filename="../ladderworks/gui/palette.py" line="159"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>
@@ -4933,6 +5174,140 @@
         <location filename="../ladderworks/gui/docks/trace_files.py" line="140"/>
         <source>Import a trace</source>
         <translation>Import a trace</translation>
+    </message>
+</context>
+<context>
+    <name>WatchTable</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="134"/>
+        <source>Watch table</source>
+        <translation>Watch table</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="136"/>
+        <source>Watch table: tags and addresses, live, modified on request</source>
+        <translation>Watch table: tags and addresses, live, modified on request</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <source>Display format</source>
+        <translation>Display format</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <source>Monitor value</source>
+        <translation>Monitor value</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="141"/>
+        <source>Modify value</source>
+        <translation>Modify value</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="379"/>
+        <source>Modify now</source>
+        <translation>Modify now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="143"/>
+        <source>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</source>
+        <translation>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="146"/>
+        <source>Delete rows</source>
+        <translation>Delete rows</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="292"/>
+        <source>Checked: written by Modify now</source>
+        <translation>Checked: written by Modify now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="302"/>
+        <source>Type a name or an address to add a row</source>
+        <translation>Type a name or an address to add a row</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="305"/>
+        <source>&lt;Add new&gt;</source>
+        <translation>&lt;Add new&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="381"/>
+        <source>Delete row</source>
+        <translation>Delete row</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="405"/>
+        <source>Check the rows to modify (or select one), then Modify now</source>
+        <translation>Check the rows to modify (or select one), then Modify now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="415"/>
+        <source>{0} values written, {1} refused</source>
+        <translation>{0} values written, {1} refused</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="418"/>
+        <source>{0} values written</source>
+        <translation>{0} values written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="11"/>
+        <source>Bool</source>
+        <translation>Bool</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="12"/>
+        <source>DEC</source>
+        <translation>DEC</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="13"/>
+        <source>DEC+/-</source>
+        <translation>DEC+/-</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="14"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="15"/>
+        <source>Bin</source>
+        <translation>Bin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="16"/>
+        <source>Floating-point number</source>
+        <translation>Floating-point number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="17"/>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="18"/>
+        <source>Character</source>
+        <translation>Character</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="19"/>
+        <source>String</source>
+        <translation>String</translation>
     </message>
 </context>
 </TS>

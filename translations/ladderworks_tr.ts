@@ -150,77 +150,92 @@
 <context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="280"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="264"/>
+        <source>{0} has {1} bytes: a box shows a byte or a word (the time chart shows any value)</source>
+        <translation>{0} {1} bayttır: bir kutu bir bayt ya da bir sözcük gösterir (zaman kartı her değeri gösterir)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="339"/>
         <source>Forced to {0}</source>
         <translation>{0} değerine zorlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="360"/>
         <source>Load a program to force inputs</source>
         <translation>Girişleri zorlamak için bir program yükleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="377"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="382"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="387"/>
         <source>Release the force</source>
         <translation>Zorlamayı kaldır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Live</source>
         <translation>Canlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Stopped</source>
         <translation>Durduruldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="349"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="408"/>
         <source>PLC bit display</source>
         <translation>PLC BIT GÖSTERİMİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="350"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="409"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="410"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="352"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="412"/>
+        <source>Tag or address</source>
+        <translation>Etiket ya da adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="413"/>
         <source>Byte</source>
         <translation>Bayt</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="414"/>
         <source>Hex</source>
         <translation>Onaltılık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="415"/>
         <source>Dec</source>
         <translation>Ondalık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="417"/>
+        <source>e.g. &quot;Start&quot;, %MW2</source>
+        <translation>ör. &quot;Start&quot;, %MW2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="418"/>
         <source>e.g. X12</source>
         <translation>örn. X12</translation>
     </message>
@@ -228,132 +243,132 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
         <source>Contact</source>
         <translation>Kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
         <source>NOT contact</source>
         <translation>DEĞİL kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
         <source>Coil</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="70"/>
         <source>NOT coil</source>
         <translation>DEĞİL çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="70"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="71"/>
         <source>SET coil</source>
         <translation>SET çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="72"/>
         <source>RST coil</source>
         <translation>RST çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="83"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
         <source>Read</source>
         <translation>Okuma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
         <source>Write</source>
         <translation>Yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="87"/>
         <source>Read and write</source>
         <translation>Okuma ve yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="93"/>
         <source>Level {0}</source>
         <translation>{0}. seviye</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
         <source>Network</source>
         <translation>Devre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
         <source>Label</source>
         <translation>Etiket</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="135"/>
         <source>Program part</source>
         <translation>Program bölümü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="136"/>
         <source>Element</source>
         <translation>Eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="136"/>
         <source>Access</source>
         <translation>Erişim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="137"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
         <source>All addresses — uses: {0}</source>
         <translation>Tüm adresler — kullanım: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="282"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="321"/>
         <source>{0} is not used in the program</source>
         <translation>{0} programda kullanılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="324"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="344"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="311"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="350"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Adres veya sembol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="308"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="347"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Bu adresin çapraz &amp;referansı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="309"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="348"/>
         <source>List every place the program reads and writes the address</source>
         <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
     </message>
@@ -627,966 +642,1051 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>no function box with FO outputs at cell ({row}, {col})</source>
+        <translation>({row}, {col}) hücresinde FO çıkışlı bir fonksiyon kutusu yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
         <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
         <translation>programın {count} sembolünün (%@2) o ailenin dosyalarında yeri yok: program kendi ailesinde kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
         <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
         <translation>{step}. komutun ({name}) o ailede karşılığı yok: program kendi ailesinde kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
         <source>END ends the program and stays its last network: draw new networks above it</source>
         <translation>END programı bitirir ve son ağ olarak kalır: yeni ağları onun üstüne çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; programın bir adresi veya sembolü değil: değiştirmek için bir adres veya sembol yazın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} ve {replacement}: bit ile bit, bayt ile bayt değiştirilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} kendisiyle değiştirilmiş olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {other}. devrede)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
         <source>instruction after END, the end of the program</source>
         <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII biçimi: {quote} ile açılan metin hiç kapatılmamış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII biçimi: tekrar sayısı 1 ile 999 arasında olmalı, bulunan {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII biçimi: &apos;{text}&apos; bir öğe değil (&apos;metin&apos;, MX, onaltılık kodlar, &quot;w.dRn&quot;, / ya da \ bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII biçimi: &quot;{text}&quot; bir değişken değil (örneğin &quot;8.2R0&quot; ya da &quot;4R10H&quot; bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII biçimi: END&apos;den sonra metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII biçimi: END eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; bir Fatek komutu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>önünde FUN, TMR ya da CTR olmayan bir operand satırı: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
         <source>{name} needs a device</source>
         <translation>{name} bir eleman (cihaz) adresi ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; bir Fatek elemanı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} &apos;{text}&apos; alamaz ({kinds} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; aralık dışında ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} önünde bir şey yok: ağ ORG ile başlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} iki blok ister: ikincisini LD ile başlatın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} bu ağda iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>a network has at most {limit} TR points</source>
         <translation>bir ağda en fazla {limit} TR noktası olabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>bu ağda OUT TR{number} komutundan önce LD TR{number}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} başlangıç hattında: önüne ORG SHORT koyun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: LD ile başlayan {count} blok birleştirilmemiş (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number}, LadderWorks&apos;ün bildiği bir Fatek fonksiyonu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: {param} operand satırı eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} başka operand almaz, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos;, {param} operandı olamaz (bir kaydedici ya da sabit olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</source>
         <translation>&apos;{text}&apos;, {param} operandı olamaz (bir bit aygıtı olmalı: Y0, M5 …)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} korunur ve çizilir ama simüle edilmez: çıkışları 0 kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos;, {name} zaman tabanı değil ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: burada fonksiyon çıkışı yok (bir kutudan sonra FO0-FO7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
         <translation>&apos;{text}…&apos; bir Fatek sayısı olamayacak kadar uzun: satır okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
         <translation>WinProladder yorum dışa aktarımı değil: ilk satırı REF, COMMENT, DESCRIPTION olmalı (sekmeyle ayrılmış)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
         <translation>&apos;{text}&apos; bir Fatek cihazı değil: satır atlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
         <translation>yorumlar {chosen} kod sayfasında okundu; {others} olarak da okunabiliyor: adları denetleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
         <translation>{offset}. bayt (0x{byte}) denenen hiçbir Windows kod sayfasında karakter değil: yorumlar okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII dosyaları: &apos;{text}&apos;, [R1000] gibi bir bölüm başlığı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>WinProladder projesi değil: &apos;Fatek WinProladder, File Format 1&apos; başlığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>.pdw dosyası eksik: {offset}. bayttaki kaydı dosyanın sonunu aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kaydın sağlama toplamı tutmuyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kayıt hatalı biçimde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>.pdw dosyasında program yok ({offset}. bayta kadar bakıldı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>{offset}. bayttaki programın maskesi kaldırılamıyor: maskenin çıkarılabileceği silinmiş bir bellek bloğu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>.pdw dosyası bozuk: program görüntüsü {offset}. baytta hatalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>.pdw dosyası bozuk: programın kodu sağlama toplamıyla uyuşmuyor ({offset}. bayt)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} komut kodunu LadderWorks henüz çözemiyor: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} operand kodu LadderWorks&apos;ün henüz çözebildiği bir cihaz değil: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>program {offset}. baytta bir komutun ortasında bitiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; burada {name} komutunun aygıtı olamaz: onunla satır {other} olarak okunur ({other} komutunu paletten yerleştirin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
         <translation>{name} korunur ve çizilir ama benzetilmez: tarama onu atlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
         <translation>{count} komut benzetilmez, tarama onları atlar (satır): {names}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
         <translation>INV kendinden önceki tüm enerjiyi tersler: onu baradan ya da bir dallanma noktasından gelen bir hatta çizin, paralel bir bloğun içine değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>{name}: operand {index} is missing</source>
         <translation>{name}: {index}. işlenen eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>step {step} is not after step {previous}: the step numbers must grow</source>
         <translation>{step} adımı {previous} adımından sonra gelmiyor: adım numaraları artmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="347"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="353"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="359"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>projede program yok: derlenmiş komut listesi yok ve ladder çizimi boş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>proje derlenmeden kaydedilmiş: programı ladder çiziminden okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="383"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>proje derlenmiş bir komut listesi içermiyor ve ladder çiziminde LadderWorks&apos;ün henüz okumadığı bir hücre var (bayt {offset}: bir kol, bir kenar kontağı ...): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>NEXT without a FOR before it</source>
         <translation>Öncesinde FOR olmayan NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MCR veya RET&apos;i olmayan MC veya STL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>Öncesinde MC veya STL olmayan MCR veya RET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
         <source>FOR without its NEXT</source>
         <translation>NEXT&apos;i olmayan FOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="403"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="423"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bayt: bir değer 1, 2 veya 4 bayt olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="440"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="443"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="461"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="460"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="462"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="463"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <source>&apos;{text}&apos; is neither a name of the program nor an address</source>
+        <translation>&apos;{text}&apos; ne programın bir adı ne de bir adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <source>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</source>
+        <translation>&apos;{text}&apos; bir {type}: üyelerinden birini izleyin (ör. {text}.Q)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <source>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</source>
+        <translation>&apos;{text}&apos; bir {type}: 64 bitlik değerler izleme tablosunda henüz gösterilmiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <source>the value has {length} characters: at most {limit} are read</source>
+        <translation>değer {length} karakter: en çok {limit} karakter okunur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
+        <source>no modify value to write</source>
+        <translation>yazılacak değiştirme değeri yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
+        <translation>&apos;{text}&apos; TRUE ya da FALSE (veya 1, 0) değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="475"/>
+        <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
+        <translation>&apos;{text}&apos; bir tam sayı değil (ör. 12, -3, 16#FF, 2#0101)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="477"/>
+        <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
+        <translation>&apos;{text}&apos; aralığın dışında: {low} ile {high} arası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
+        <translation>&apos;{text}&apos; bir gerçel sayı değil (ör. 1.5)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
+        <translation>&apos;{text}&apos; bir süre değil (ör. T#5S_300MS, T#1M30S ya da 1500 ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
+        <translation>&apos;{text}&apos; Latin-1 kümesinden tek bir karakter değil (ör. &apos;A&apos;)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
+        <translation>&apos;{text}&apos; bir dizenin tutamayacağı karakterler içeriyor (yalnızca Latin-1 kümesi)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="486"/>
+        <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
+        <translation>&apos;{text}&apos; dizenin {length} karakterinden uzun</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="488"/>
+        <source>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</source>
+        <translation>&apos;{name}&apos; ne bir harita dosyası ne de programın bir global veri bloğu (global veri blokları: {names})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; bir S7 adresi (ör. %I0.0, %MW2, %DB1.DBW4) ya da etiket değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: {expected} bekleniyordu, &apos;{found}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: metin {what} içinde bitiyor (kesilmiş mi?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; LadderWorks&apos;ün benzettiği bir komut değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; ne bir etiket, ne bloğun bir üyesi, ne de bir adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} için {pin} ucu gerekli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: {part} bağlantıları izlenemiyor ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: bu blokta &apos;{label}&apos; etiketi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="509"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: {language} network&apos;ü gösterilir, benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: çağrılan &apos;{block}&apos; bloğu programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
         <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
         <translation>network {network}: {text} okunan etiket tablolarının hiçbirinde yok; LadderWorks ona kendi yerini veriyor ({type})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: &apos;{type}&apos; tipinde {part} benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: &apos;{text}&apos; için yer kalmadı (DB üyeleri ve örnekler 10000 baytı paylaşır)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>dosya {size} MB: {limit} MB üzerindeki S7 dışa aktarımları okunmaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
         <source>tag table: {why}</source>
         <translation>etiket tablosu: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
+        <translation>network {network}, satır {row}, sütun {column}: kontağın ya da bobinin operandı yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
+        <translation>network {network}, satır {row}, sütun {column}: &apos;{name}&apos; bir S7 elemanı değil (S7 paletini kullanın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>bu değişiklik S7 bloğunun dosyasına yazılamıyor: TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, satır {line}: {expected} bekleniyordu, &apos;{found}&apos; bulundu: kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, satır {line}: metin {what} içinde bitiyor (kesilmiş mi?): kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>S7 bloğunun dosyası artık okunamıyor (satır {line}): hiçbir şey yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; S7 bloğunun dosya biçiminde yazılamıyor: bu değişikliği TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="517"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
         <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
         <translation>{block}, network {network}: &apos;{scope}&apos; kapsamlı UId {uid} erişimi LadderWorks&apos;ün okuduğu hiçbir şeyi adlandırmıyor; ona bağlı parçalar benzetilmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>
@@ -1652,19 +1752,19 @@
 <context>
     <name>FamilyWords</name>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="27"/>
-        <location filename="../ladderworks/gui/family_words.py" line="32"/>
-        <location filename="../ladderworks/gui/family_words.py" line="37"/>
+        <location filename="../ladderworks/gui/family_words.py" line="28"/>
+        <location filename="../ladderworks/gui/family_words.py" line="33"/>
+        <location filename="../ladderworks/gui/family_words.py" line="38"/>
         <source>e.g. {0}</source>
         <translation>örn. {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="43"/>
+        <location filename="../ladderworks/gui/family_words.py" line="44"/>
         <source>Type the devices to watch, e.g. {0}</source>
         <translation>İzlenecek aygıtları yazın, örn. {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="53"/>
+        <location filename="../ladderworks/gui/family_words.py" line="54"/>
         <source>FANUC PMC</source>
         <translation>FANUC PMC</translation>
     </message>
@@ -1806,52 +1906,83 @@
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="93"/>
         <source>Forced and passive</source>
         <translation>Zorlananlar ve pasifler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="95"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="95"/>
         <source>Signal / element</source>
         <translation>Sinyal / eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="96"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="76"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="98"/>
         <source>Release all</source>
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="99"/>
+        <source>&amp;Bit:</source>
+        <translation>&amp;Bit:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="100"/>
+        <source>an address or a tag</source>
+        <translation>bir adres ya da bir etiket</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="101"/>
+        <source>Force to 1</source>
+        <translation>1&apos;e zorla</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
+        <source>Force to 0</source>
+        <translation>0&apos;a zorla</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="118"/>
+        <source>{0} is not a bit: only bits are forced</source>
+        <translation>{0} bir bit değil: yalnızca bitler zorlanır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="127"/>
+        <source>Load a program to force its bits</source>
+        <translation>Bitlerini zorlamak için bir program yükleyin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="145"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="152"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="158"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="169"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="173"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
@@ -1986,7 +2117,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1996,32 +2127,42 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="45"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <source>This instruction is not placed from the palette in this program</source>
+        <translation>Bu komut bu programda paletten yerleştirilmez</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
+        <source>Output pins</source>
+        <translation>Çıkış uçları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="166"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="170"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -2031,63 +2172,71 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
+        <source>Operand, e.g. &quot;Start&quot;, %I0.1, #Run (// comment)</source>
+        <translation>Operand, ör. &quot;Start&quot;, %I0.1, #Run (// açıklama)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="59"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="312"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="324"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="79"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="86"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="97"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="104"/>
         <source>open circuit here: draw a wire or an element</source>
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="74"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="75"/>
         <source>N{0}</source>
         <translation>D{0}</translation>
     </message>
@@ -2100,32 +2249,32 @@
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
     </message>
@@ -2135,144 +2284,154 @@
         <translation>&amp;Yeni...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
+        <source>Open &amp;folder...</source>
+        <translation>&amp;Klasör aç...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>Import s&amp;ymbols...</source>
         <translation>S&amp;embolleri içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="92"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="13"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="93"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="95"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="14"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="102"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="105"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="110"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="115"/>
+        <source>Output pins (FO)…</source>
+        <translation>Çıkış uçları (FO)…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="118"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
         <source>&amp;Find...</source>
         <translation>&amp;Bul...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
         <source>R&amp;eplace...</source>
         <translation>&amp;Değiştir...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
         <source>Find &amp;next</source>
         <translation>&amp;Sonrakini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>Find pre&amp;vious</source>
         <translation>&amp;Öncekini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="134"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
         <source>Fit &amp;width</source>
         <translation>&amp;Genişliğe sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="145"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Merdiven diyagramı olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="146"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="151"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="159"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="156"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="161"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
@@ -2322,29 +2481,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="207"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="438"/>
+        <location filename="../ladderworks/gui/main_window.py" line="443"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="450"/>
+        <location filename="../ladderworks/gui/main_window.py" line="455"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="457"/>
+        <location filename="../ladderworks/gui/main_window.py" line="462"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="532"/>
-        <location filename="../ladderworks/gui/main_window.py" line="282"/>
-        <location filename="../ladderworks/gui/main_window.py" line="452"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
+        <location filename="../ladderworks/gui/main_window.py" line="284"/>
+        <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -2422,7 +2581,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="226"/>
         <location filename="../ladderworks/gui/file_actions.py" line="244"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="548"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="554"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
@@ -2448,133 +2607,134 @@
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="492"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="547"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="553"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="564"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="570"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="403"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="433"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
         <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="448"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="408"/>
+        <location filename="../ladderworks/gui/main_window.py" line="413"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="424"/>
+        <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="444"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC mevcut programını tutuyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="494"/>
+        <location filename="../ladderworks/gui/main_window.py" line="499"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="497"/>
+        <location filename="../ladderworks/gui/main_window.py" line="502"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="530"/>
+        <location filename="../ladderworks/gui/main_window.py" line="535"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="531"/>
+        <location filename="../ladderworks/gui/main_window.py" line="536"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2634,127 +2794,167 @@
         <source>The program cannot become a {0} program: {1}</source>
         <translation>Program bir {0} programı olamaz: {1}</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="50"/>
+        <source>Open a folder of exported blocks</source>
+        <translation>Dışa aktarılmış blokların klasörünü aç</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="60"/>
+        <source>{0}: no changes to save</source>
+        <translation>{0}: kaydedilecek değişiklik yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
+        <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
+        <translation>{0} dışa aktarılmış blokların klasörü: değişen programı bir dosya adıyla kaydedin</translation>
+    </message>
 </context>
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="135"/>
         <source>Modbus server</source>
         <translation>Modbus sunucusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="136"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Adres (sunucu:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="215"/>
         <source>&amp;Map file (CSV):</source>
         <translation>&amp;Harita dosyası (CSV):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="250"/>
         <source>the {0} map</source>
         <translation>{0} haritası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="139"/>
         <source>Choose…</source>
         <translation>Seç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="140"/>
         <source>Dialect&apos;s map</source>
         <translation>PLC ailesinin haritası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="141"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
         <translation>Programın PLC ailesinin kendi haritasını sun (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="143"/>
+        <source>&amp;Holding registers:</source>
+        <translation>&amp;Tutma yazmaçları:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="145"/>
         <source>Clients connected:</source>
         <translation>Bağlı istemciler:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
         <source>Requests a second:</source>
         <translation>Saniyedeki istek:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Adresi sunucu:port olarak yazın, ör. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>{0} dinlenemiyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
         <source>Modbus map file</source>
         <translation>Modbus harita dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus haritaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="207"/>
+        <source>Bit memory (%MW)</source>
+        <translation>Bit belleği (%MW)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="209"/>
+        <source>Data block {0}</source>
+        <translation>Veri bloğu {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="214"/>
+        <source>&amp;Map file (CSV) or DB:</source>
+        <translation>&amp;Harita dosyası (CSV) ya da DB:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>{0} haritası okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="230"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="233"/>
         <source>The map {0} is not served:</source>
         <translation>{0} haritası sunulmuyor:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="246"/>
+        <source>the {0} map, holding registers in the DB {1}</source>
+        <translation>{0} haritası, tutma yazmaçları {1} veri bloğunda</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="249"/>
         <source>the file {0}</source>
         <translation>{0} dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="272"/>
         <source>Stop server</source>
         <translation>Sunucuyu durdur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="273"/>
         <source>Start server</source>
         <translation>Sunucuyu başlat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="277"/>
         <source>Map served:</source>
         <translation>Sunulan harita:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="278"/>
         <source>Map to serve:</source>
         <translation>Sunulacak harita:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="282"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>{0}:{1} dinleniyor (Modbus/TCP, her birim no), harita: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="286"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Ağdaki başka bilgisayarlar bu PLC&apos;yi okuyup yazabilir.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="291"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Durduruldu. Başlatıldığında bu bilgisayardaki bir HMI {0} adresine bağlanır.</translation>
     </message>
@@ -2816,6 +3016,19 @@
         <location filename="../ladderworks/gui/locale_numbers.py" line="18"/>
         <source>{0}%</source>
         <translation>%{0}</translation>
+    </message>
+</context>
+<context>
+    <name>OperandDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="17"/>
+        <source>Operands of {0}</source>
+        <translation>{0} operandları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="20"/>
+        <source>As TIA Portal writes them: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</source>
+        <translation>TIA Portal&apos;ın yazdığı gibi: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</translation>
     </message>
 </context>
 <context>
@@ -2891,6 +3104,19 @@
         <location filename="../ladderworks/gui/os_errors.py" line="36"/>
         <source>system error: {0}</source>
         <translation>sistem hatası: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>OutputPinsDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/output_pins_dialog.py" line="38"/>
+        <source>Output pins</source>
+        <translation>Çıkış uçları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/output_pins_dialog.py" line="39"/>
+        <source>The outputs {0} shows on its right side (FO0 is its first output, always shown); draw each pin&apos;s coils on its row:</source>
+        <translation>{0} kutusunun sağ yanında gösterdiği çıkışlar (FO0 ilk çıkışıdır, hep gösterilir); her ucun bobinlerini kendi satırına çizin:</translation>
     </message>
 </context>
 <context>
@@ -3338,108 +3564,108 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="299"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="300"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="301"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="296"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="297"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="303"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="298"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="304"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="305"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="308"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="303"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="309"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="304"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="310"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="306"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="312"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="316"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="322"/>
         <source>{0} %</source>
         <translation>%{0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="387"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="166"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="399"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="401"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="403"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="444"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="482"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="488"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="492"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="498"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="502"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="508"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="105"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
@@ -3447,78 +3673,78 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>On-line mode</source>
         <translation>Çevrim içi mod</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
         <source>Make passive (disable)</source>
         <translation>Pasif hale getir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
         <source>Make active again</source>
         <translation>Tekrar aktif yap</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="69"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="70"/>
         <source>Release the force</source>
         <translation>Zorlamayı bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="89"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="94"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>Çevrim içi mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="100"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>Çizim PLC&apos;deki program değil: önce PLC kontrol ekranında derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="106"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="163"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="175"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>Çevrim içi: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="136"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: çizim değişti; artık PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="145"/>
         <source>Off-line: another program is shown; it is not the program the PLC runs</source>
         <translation>Off-line: başka bir program gösteriliyor; PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="198"/>
         <source>Select a contact, coil or function first</source>
         <translation>Önce bir kontak, çıkış veya fonksiyon seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="202"/>
         <source>This element has no op in the PLC program</source>
         <translation>Bu elemanın PLC programında karşılığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="225"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
     </message>
@@ -4322,7 +4548,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
@@ -4357,77 +4583,77 @@
         <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
         <source>Save the recorded scenario</source>
         <translation>Kaydedilen senaryoyu sakla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
         <source>recorded in LadderWorks</source>
         <translation>LadderWorks ile kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
         <source>Recording inputs and forces...</source>
         <translation>Girişler ve zorlamalar kaydediliyor...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="243"/>
         <source>Recorded {0} changes</source>
         <translation>{0} değişiklik kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="251"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="252"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>PLC scenario</source>
         <translation>PLC senaryosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
         <source>Run scenario...</source>
         <translation>Senaryo çalıştır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Record scenario</source>
         <translation>Senaryo kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Line</source>
         <translation>Satır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Check</source>
         <translation>Denetim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Expected</source>
         <translation>Beklenen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Got</source>
         <translation>Okunan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Time (ms)</source>
         <translation>Zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
@@ -4498,147 +4724,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/family_words.py" line="45"/>
+        <location filename="../ladderworks/gui/family_words.py" line="46"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="206"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="218"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="230"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="243"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="426"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="445"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="453"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="478"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="519"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="524"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="546"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="547"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="548"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="549"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="553"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="558"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="560"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
@@ -4872,12 +5098,27 @@
         <translation>Fatek FBs kontakları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="155"/>
+        <location filename="../ladderworks/gui/palette.py" line="36"/>
+        <source>Siemens S7-1200 instructions</source>
+        <translation>Siemens S7-1200 komutları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="37"/>
+        <source>S7-1200 program structure</source>
+        <translation>S7-1200 program yapısı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="38"/>
+        <source>S7-1200 contacts</source>
+        <translation>S7-1200 kontakları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="158"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="156"/>
+        <location filename="../ladderworks/gui/palette.py" line="159"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
@@ -4933,6 +5174,140 @@
         <location filename="../ladderworks/gui/docks/trace_files.py" line="140"/>
         <source>Import a trace</source>
         <translation>Bir izleme içe aktar</translation>
+    </message>
+</context>
+<context>
+    <name>WatchTable</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="134"/>
+        <source>Watch table</source>
+        <translation>İzleme tablosu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="136"/>
+        <source>Watch table: tags and addresses, live, modified on request</source>
+        <translation>İzleme tablosu: etiketler ve adresler, canlı; istenince değiştirilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
+        <source>Name</source>
+        <translation>Ad</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <source>Display format</source>
+        <translation>Görüntüleme biçimi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <source>Monitor value</source>
+        <translation>İzleme değeri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="141"/>
+        <source>Modify value</source>
+        <translation>Değiştirme değeri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="379"/>
+        <source>Modify now</source>
+        <translation>Şimdi değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="143"/>
+        <source>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</source>
+        <translation>İşaretli satırların değiştirme değerlerini (işaretli yoksa seçili satırlarınkini) şimdi PLC&apos;ye yaz</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="146"/>
+        <source>Delete rows</source>
+        <translation>Satırları sil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="292"/>
+        <source>Checked: written by Modify now</source>
+        <translation>İşaretli: Şimdi değiştir ile yazılır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="302"/>
+        <source>Type a name or an address to add a row</source>
+        <translation>Satır eklemek için bir ad ya da adres yazın</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="305"/>
+        <source>&lt;Add new&gt;</source>
+        <translation>&lt;Yeni ekle&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="381"/>
+        <source>Delete row</source>
+        <translation>Satırı sil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="405"/>
+        <source>Check the rows to modify (or select one), then Modify now</source>
+        <translation>Değiştirilecek satırları işaretleyin (ya da birini seçin), sonra Şimdi değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="415"/>
+        <source>{0} values written, {1} refused</source>
+        <translation>{0} değer yazıldı, {1} değer reddedildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="418"/>
+        <source>{0} values written</source>
+        <translation>{0} değer yazıldı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="11"/>
+        <source>Bool</source>
+        <translation>Bool</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="12"/>
+        <source>DEC</source>
+        <translation>DEC</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="13"/>
+        <source>DEC+/-</source>
+        <translation>DEC+/-</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="14"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="15"/>
+        <source>Bin</source>
+        <translation>Bin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="16"/>
+        <source>Floating-point number</source>
+        <translation>Kayan noktalı sayı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="17"/>
+        <source>Time</source>
+        <translation>Zaman</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="18"/>
+        <source>Character</source>
+        <translation>Karakter</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="19"/>
+        <source>String</source>
+        <translation>Dize</translation>
     </message>
 </context>
 </TS>

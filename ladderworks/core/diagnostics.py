@@ -120,6 +120,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "an edge or comparison contact has no normally closed form"),
     "edit-no-element": QT_TRANSLATE_NOOP(
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
+    "edit-no-pins": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no function box with FO outputs at cell ({row}, {col})"),
     "family-symbols": QT_TRANSLATE_NOOP(
         "Diagnostic", "the program's {count} symbols (%@2) have no place in that family's "
         "files: the program keeps its family"),
@@ -459,6 +461,33 @@ MESSAGES: dict[str, str] = {
     "modbus-map-empty": QT_TRANSLATE_NOOP("Diagnostic", "the map has no row"),
     "modbus-map-width": QT_TRANSLATE_NOOP(
         "Diagnostic", "{device}: a device's register is 16 bits: the width must be 2"),
+    # the watch table (docs/plc-utilities.md, Watch table)
+    "watch-unknown": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is neither a name of the program nor an address"),
+    "watch-struct": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is a {type}: watch one of its members (e.g. {text}.Q)"),
+    "watch-wide": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is a {type}: 64-bit values are not shown in the watch table yet"),
+    "watch-long": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the value has {length} characters: at most {limit} are read"),
+    "watch-empty": QT_TRANSLATE_NOOP("Diagnostic", "no modify value to write"),
+    "watch-bool": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not TRUE or FALSE (or 1, 0)"),
+    "watch-number": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a whole number (e.g. 12, -3, 16#FF, 2#0101)"),
+    "watch-range": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is out of range: {low} to {high}"),
+    "watch-real": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a real number (e.g. 1.5)"),
+    "watch-time": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)"),
+    "watch-char": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not one character of the Latin-1 set (e.g. 'A')"),
+    "watch-latin1": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' has characters a string cannot hold (only the Latin-1 set)"),
+    "watch-string": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is longer than the string's {length} characters"),
+    "modbus-map-db": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{name}' is neither a map file nor a global DB of the program"
+        " (its global DBs: {names})"),
     # Siemens S7-1200 (docs/dialects.md, S7-1200)
     "s7-address": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag"),
@@ -493,6 +522,12 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "the file has {size} MB: S7 exports over {limit} MB are not read"),
     "s7-tags": QT_TRANSLATE_NOOP(
         "Diagnostic", "tag table: {why}"),
+    "s7-grid-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}, row {row}, column {column}: the contact or coil has "
+        "no operand"),
+    "s7-grid-element": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}, row {row}, column {column}: '{name}' is no S7 "
+        "element (use the S7 palette)"),
     "s7-save-changed": QT_TRANSLATE_NOOP(
         "Diagnostic", "this change cannot be written into the S7 block's file: make it in "
         "TIA Portal"),

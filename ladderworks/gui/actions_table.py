@@ -54,7 +54,7 @@ class MenuSpec:
 MENUS: tuple[MenuSpec, ...] = (
     MenuSpec("menu_file", QT_TRANSLATE_NOOP("MainWindow", "&File")),
     MenuSpec("menu_recent", QT_TRANSLATE_NOOP("MainWindow", "Recent files"),
-             parent="menu_file", after="action_open"),
+             parent="menu_file", after="action_open_folder"),
     MenuSpec("menu_edit", QT_TRANSLATE_NOOP("MainWindow", "&Edit")),
     MenuSpec("menu_view", QT_TRANSLATE_NOOP("MainWindow", "&View")),
     MenuSpec("menu_plc", QT_TRANSLATE_NOOP("MainWindow", "&PLC")),
@@ -71,6 +71,8 @@ ACTIONS: tuple[ActionSpec, ...] = (
       "new_program_dialog", shortcut=Key.New, icon="SP_FileIcon", menu="menu_file", toolbar=0),
     A("action_open", QT_TRANSLATE_NOOP("MainWindow", "&Open..."),
       "open_dialog", shortcut=Key.Open, icon="SP_DialogOpenButton", menu="menu_file", toolbar=0),
+    A("action_open_folder", QT_TRANSLATE_NOOP("MainWindow", "Open &folder..."),
+      "open_folder_dialog", icon="SP_DirOpenIcon", menu="menu_file"),
     A("action_save", QT_TRANSLATE_NOOP("MainWindow", "&Save"),
       "save", shortcut=Key.Save, icon="SP_DialogSaveButton", menu="menu_file", group=1, toolbar=0),
     A("action_save_as", QT_TRANSLATE_NOOP("MainWindow", "Save &As..."),
@@ -110,6 +112,9 @@ ACTIONS: tuple[ActionSpec, ...] = (
       enabled_when=LADDER_SHOWN),
     A("action_or", QT_TRANSLATE_NOOP("MainWindow", "OR (add parallel)"),
       "editor.edits.or_at_cursor", icon="or", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
+    A("action_output_pins", QT_TRANSLATE_NOOP("MainWindow", "Output pins (FO)…"),
+      "editor.edits.output_pins_at_cursor", menu="menu_edit", group=2,
+      enabled_when=LADDER_SHOWN),
     A("action_insert_row_before", QT_TRANSLATE_NOOP("MainWindow", "Insert row before"),
       "editor.edits.insert_row_before", icon="row_before", menu="menu_edit", group=2,
       enabled_when=LADDER_SHOWN),
@@ -160,6 +165,7 @@ ACTIONS: tuple[ActionSpec, ...] = (
 # The grid's right-click menu (None: a separator); the PLC's on-line actions follow.
 CONTEXT_MENU: tuple[str | None, ...] = (
     "action_cut", "action_copy", "action_paste", "action_delete", None,
-    "action_invert", "action_or", None, "action_insert_row_before", "action_insert_row_after",
+    "action_invert", "action_or", "action_output_pins", None, "action_insert_row_before",
+    "action_insert_row_after",
     None, "action_delete_network",
 )

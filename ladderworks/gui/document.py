@@ -16,7 +16,7 @@ from ladderworks.core.dialects.delta.dvp_file import is_dvp
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
-from ladderworks.core.il.reading import parse_read, parse_text
+from ladderworks.core.il.reading import parse_file, parse_read, parse_text
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text, split_lines
 from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
 from ladderworks.gui.editor.ladder_model import LadderModel
@@ -162,10 +162,13 @@ class ProgramDocument(QObject):
         self._watch(None)
 
     def read(self, path: Path) -> tuple[ParseResult, bytes]:
-        """Read and parse `path` (OSError); it becomes the document's file."""
-        data = path.read_bytes()
+        """Read and parse `path` (OSError); it becomes the document's file. A folder of
+        exports (S7's: an OB, its blocks, DBs and tag tables) is read as one program."""
+        folder = path.is_dir()
+        data = b"" if folder else path.read_bytes()
         release_frozen()  # the program shown so far is dropped: its objects walked again
-        result = parse_read(path, data)  # with Fatek's comment export beside it: symbols
+        # with Fatek's comment export beside it: symbols; a folder: its dialect's opener
+        result = parse_file(path) if folder else parse_read(path, data)
         if result.program.source is not None:
             result.diagnostics = sorted(
                 result.diagnostics + damaged_drafts(result.program.source.lines),
@@ -174,7 +177,7 @@ class ProgramDocument(QObject):
         self.form = result.program.form
         self.origin = result.program
         self.binary = is_dvp(data)
-        self.disk = DiskState.of(path, data)
+        self.disk = None if folder else DiskState.of(path, data)
         self._watch(path)
         return result, data
 

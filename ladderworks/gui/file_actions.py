@@ -19,7 +19,7 @@ from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
-from ladderworks.gui import file_dialogs, questions
+from ladderworks.gui import file_dialogs, folder_program, questions
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.document import (
     DiskState,
@@ -287,6 +287,10 @@ class FileActions(_Window):
         if name:
             self.load(name)
 
+    def open_folder_dialog(self) -> None:
+        """File > Open folder: a folder of exports as one program (gui/folder_program.py)."""
+        folder_program.open_dialog(self)
+
     # -- saving --------------------------------------------------------------------------
 
     def program_text(self, *, faithful: bool = False) -> str | None:
@@ -367,6 +371,8 @@ class FileActions(_Window):
         if refused is not None:  # a .dvp project: LadderWorks writes its text forms only
             self.warn(translate("MainWindow", "Save"), diagnostic_text(refused))
             return self.save_as_dialog()
+        if path.is_dir():  # a folder of exports: nothing written unless a block changed
+            return folder_program.save(self, path)
         self._last_save_result = False
         go_on = self._may_write(path)
         if not go_on:

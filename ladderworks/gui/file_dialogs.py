@@ -109,3 +109,12 @@ def open_file_name(parent: QWidget | None, caption: str, directory: str, filters
 def save_file_name(parent: QWidget | None, caption: str, directory: str, filters: str) -> str:
     """Ask for a file to write (asking before overwriting one); "" when cancelled."""
     return _chosen(make_file_dialog(parent, caption, directory, filters, saving=True))
+
+
+def open_folder_name(parent: QWidget | None, caption: str, directory: str) -> str:
+    """Ask for an existing folder to open (a folder of exports); "" when cancelled."""
+    dialog = SizedFileDialog(parent, caption, directory)
+    dialog.setFileMode(QFileDialog.FileMode.Directory)
+    dialog.setOption(QFileDialog.Option.ShowDirsOnly, True)
+    fit_to_screen(dialog, WANTED.expandedTo(dialog.sizeHint()))
+    return _chosen(dialog)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -123,6 +124,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.names_menu.changed.connect(self.editor.relayout)
         self.names_menu.changed.connect(self.plc_docks.diagnostic.view.relayout)
         self.plc_docks.diagnostic.remember_zoom(self.settings)  # its zoom, saved
+        self.plc_docks.watch.keep_in(self.settings)  # each program's watch rows
         # PLC › Native scan: the scan's code of the programs loaded (kept in the settings)
         self.scan_backend = ScanBackendChoice(self.plc_docks.session, self.settings, self)
         self.menus.add("menu_plc", self.scan_backend.action, separator=True)
@@ -280,6 +282,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def update_title(self, *_args: object) -> None:
         """The window's title: the file's name, `*` when modified."""
         name = self.path.name if self.path else translate("MainWindow", "Untitled")
+        if self.path is not None and self.path.is_dir():  # a folder of exports (S7)
+            name += os.sep
         star = "*" if self.is_modified() else ""
         self.setWindowTitle(f"{name}{star} — LadderWorks")
 
@@ -305,6 +309,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.plc_docks.session.set_symbols(program.symbols)
         self.plc_docks.session.set_console_dialect(program.dialect)  # the docks' examples
         self.plc_docks.ascii_output.use_program(self.path)  # a Fatek program's ASCII files
+        self.plc_docks.watch.use_program(self.path, program)  # its names, its kept rows
         self.program_opened.emit(program)
 
     def show_program_properties(self) -> QDialog:

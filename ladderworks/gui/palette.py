@@ -32,7 +32,10 @@ GROUP_TITLES = {"seed": QT_TRANSLATE_NOOP("ToolPalette", "Seed manual instructio
                 "delta.structure": QT_TRANSLATE_NOOP("ToolPalette", "Delta DVP program structure"),
                 "delta.contacts": QT_TRANSLATE_NOOP("ToolPalette", "Delta DVP contacts"),
                 "fatek.structure": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs program structure"),
-                "fatek.contacts": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs contacts")}
+                "fatek.contacts": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs contacts"),
+                "s7": QT_TRANSLATE_NOOP("ToolPalette", "Siemens S7-1200 instructions"),
+                "s7.structure": QT_TRANSLATE_NOOP("ToolPalette", "S7-1200 program structure"),
+                "s7.contacts": QT_TRANSLATE_NOOP("ToolPalette", "S7-1200 contacts")}
 
 
 def function_groups(dialect: str | None) -> tuple[tuple[str, tuple[InstructionSpec, ...]], ...]:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import hashlib
+
 from PySide6.QtCore import QByteArray, QSettings
 
 MAX_RECENT = 8
@@ -38,6 +40,16 @@ class Settings:
     def set_scan_backend(self, backend: str) -> None:
         """Remember the scan's code ("python" or "native")."""
         self._store.setValue("plc/backend", backend)
+        self._store.sync()
+
+    def watch_rows(self, program: str) -> str:
+        """The watch table's rows of the program at path `program` (JSON), or ""."""
+        value = self._store.value(_watch_key(program), "")
+        return value if isinstance(value, str) else ""
+
+    def set_watch_rows(self, program: str, text: str) -> None:
+        """Keep the watch table's rows (JSON) of the program at path `program`."""
+        self._store.setValue(_watch_key(program), text)
         self._store.sync()
 
     def recent_files(self) -> list[str]:
@@ -110,3 +122,8 @@ class Settings:
         self._store.setValue("view/zoom", factor)
         self._store.setValue("view/fit_width", fit_width)
         self._store.sync()
+
+
+def _watch_key(program: str) -> str:
+    """A program's watch rows' key: its path hashed (a path's slashes would be groups)."""
+    return "watch/" + hashlib.sha1(program.encode("utf-8", "surrogatepass")).hexdigest()

@@ -50,6 +50,9 @@ class Dialect:
     period_ms: int = 10  # its usual scan period (the CLI's and the session's default)
     extensions: tuple[str, ...] = ()  # file name endings its files use (".dvp")
     byteorder: str = "little"  # its multi-byte values in memory ("big": S7); plc/memory.py
+    # the watch table's display format of a word address the program gives no type (S7: TIA's
+    # Hex; the PMC's, Delta's and Fatek's screens show a signed decimal): core/watch/values.py
+    untyped_format: str = "sdec"
     # "module:function": (path, bytes or None) -> (Program, diagnostics, encoding): opens a
     # file with its companions or a folder of them as one program (S7 exports); "" for none
     opener: str = ""

@@ -166,6 +166,10 @@ class DeviceMap:
         found = self.device_of(address)
         return None if found is None else found[0].spell(found[1])
 
+    def format_sized(self, address: Address, width: int) -> str | None:
+        """The spelling of a value of `width` bytes at `address` (the device's own here)."""
+        return self.format(address)
+
     def width_at(self, address: Address) -> int:
         """The byte width of the word at `address` (2 unless a 32-bit device lives there)."""
         found = self.device_of(address)

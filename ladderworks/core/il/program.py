@@ -219,6 +219,10 @@ class Program:
     symbols: SymbolTable | None = None  # %@2: address <-> symbol, comments
     messages: dict[Address, Message] = field(default_factory=dict)  # %@4 by A bit
     io_modules: list[IoModule] = field(default_factory=list)  # %@5
+    # a dialect's own model of its source, kept beside the engine's networks it lowered to
+    # (S7: the network graph, its memory layout and each network's engine networks): the
+    # console draws it and rebuilds the program from a changed drawing (ladder/source_model.py)
+    model: object | None = None
     # a dialect's own form of the program as read, kept for its writer (S7: saving.S7Source)
     graph: object = None
 

@@ -27,6 +27,7 @@ from ladderworks.core.ladder.edits import (
     set_drawing,
     set_lead,
     set_network_comments,
+    set_operand,
     set_params,
 )
 from ladderworks.core.ladder.model import (
@@ -90,6 +91,7 @@ __all__ = [
     "set_drawing",
     "set_lead",
     "set_network_comments",
+    "set_operand",
     "set_params",
     "target_cell",
 ]

@@ -28,19 +28,45 @@ def _symbol(element: Contact | Coil | Wire) -> str:
     mark = "/" if element.negated else " "
     if isinstance(element, Coil) and coil_mark(element):  # SET / RST: (S) / (R); OUT L: (L)
         mark = coil_mark(element)
-    if isinstance(element, Contact) and element.function:  # |↑|, |>=|: edge, comparison
-        mark = row_contacts.mark(element.function)
+    if isinstance(element, Coil) and element.mark:  # a source's own coil: (P), (JMP)
+        mark = element.mark
+    if isinstance(element, Contact) and (element.function or element.mark):  # |↑|, |>=|
+        mark = row_contacts.shown_mark(element).split("\n")[0]
         return f"{'-' * (3 - len(mark) // 2)}|{mark}|{'-' * (3 - (len(mark) - 1) // 2)}"
     return f"---{'|' if isinstance(element, Contact) else '('}{mark}" \
            f"{'|' if isinstance(element, Contact) else ')'}---"
 
 
 def _label(element: Contact | Coil, spell: Spelling) -> str:
+    if element.texts or (isinstance(element, Coil) and element.mark):  # as the source
+        return (element.texts or ("",))[0][:CELL].center(CELL)  # writes it ("Start")
     if isinstance(element, Contact) and element.function:
         text = " ".join(row_contacts.operand_texts(element, spell))
         return text[:CELL].center(CELL)
     text = spell.address(element.address) if element.address is not None else "?"
     return text[:CELL].center(CELL)
+
+
+def _named_rows(box: FunctionBox) -> list[tuple[str, str, str, str]]:
+    """(label line, symbol line, operand left of it, operand right of it) for each row of a
+    box with named pins: the instance in its top edge, the title and type inside."""
+    inner = 2 * CELL - 1
+    rows: list[tuple[str, str, str, str]] = []
+    for i in range(box.height):
+        left = next((p for p in box.named if p.row == i and not p.output), None)
+        right = next((p for p in box.named if p.row == i and p.output), None)
+        middle = box.title if i == 0 else box.type_name if i == 1 else ""
+        names = (("/" if left and left.negated else "") + (left.name if left else ""),
+                 right.name if right else "")
+        body = names[0] + middle.center(inner - len(names[0]) - len(names[1]))[
+            :max(0, inner - len(names[0]) - len(names[1]))] + names[1]
+        top = ("+" + box.instance[:inner].center(inner, "-") + "+") if i == 0 else \
+            "|" + " " * inner + "|"
+        rows.append((top, "|" + body + "|", left.text if left else "",
+                     right.text if right else ""))
+    if box.height == 1 and box.type_name:
+        rows[0] = (rows[0][0], rows[0][1], rows[0][2], rows[0][3])
+    return rows
 
 
 def _box_rows(box: FunctionBox, spell: Spelling) -> list[tuple[str, str]]:
@@ -122,7 +148,18 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None,
                 if isinstance(item, Contact | Coil):
                     label[_x(c) + 1:_x(c) + 1 + CELL] = _label(item, spell)
         for (br, bc), element in network.elements():
-            if isinstance(element, FunctionBox) and br <= r < br + element.height:
+            if isinstance(element, FunctionBox) and element.named and br <= r < br + \
+                    element.height:
+                top, body, left, right = _named_rows(element)[r - br]
+                label[_x(bc) + 1:_x(bc) + 1 + len(top)] = top
+                symbol[_x(bc) + 1:_x(bc) + 1 + len(body)] = body
+                if left and bc > 0:
+                    text = (left[:CELL - 1] + "-").rjust(CELL)
+                    symbol[_x(bc - 1) + 1:_x(bc)] = text
+                if right:
+                    end = _x(bc + element.width)
+                    symbol[end:end + CELL] = ("-" + right[:CELL - 1]).ljust(CELL)
+            elif isinstance(element, FunctionBox) and br <= r < br + element.height:
                 top, body = _box_rows(element, spell)[r - br]
                 label[_x(bc) + 1:_x(bc) + 1 + len(top)] = top
                 symbol[_x(bc) + 1:_x(bc) + 1 + len(body)] = body
@@ -137,9 +174,29 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None,
                 if isinstance(element, Contact) and element.function
                 else element.name if isinstance(element, FunctionBox) else "?")
         notes.extend(f"   ({r},{c}) {name}: // {text}" for text in element.lead)
+        notes.extend(_text_notes((r, c), element))
         if element.comment:
             notes.append(f"   ({r},{c}) {name}  {element.comment}")
     return lines + notes + _symbol_notes(network, symbols, spell)
+
+
+def _text_notes(cell: tuple[int, int], element: Contact | Coil | FunctionBox) -> list[str]:
+    """`(0,1) TON "IEC_Timer_0_DB": IN, PT=T#10s -> Q, ET="Geçen Süre"` for an element drawn
+    from a source's graph: every operand as written, in full."""
+    where = f"   ({cell[0]},{cell[1]})"
+    if isinstance(element, FunctionBox) and element.named:
+        head = " ".join(t for t in (element.title, element.type_name, element.instance) if t)
+        ins = [f"{p.name}={p.text}" if p.text else p.name for p in element.named
+               if not p.output and (p.name or p.text)]
+        outs = [f"{p.name}={p.text}" if p.text else p.name for p in element.named
+                if p.output and (p.name or p.text)]
+        return [f"{where} {head}: {', '.join(ins)} -> {', '.join(outs)}"]
+    if isinstance(element, Contact | Coil) and element.texts:
+        mark = element.mark.replace("\n", " ") if element.mark else (
+            "/" if element.negated else "")
+        kind = "contact" if isinstance(element, Contact) else "coil"
+        return [f"{where} {kind}{' ' + mark if mark else ''}: {' '.join(element.texts)}"]
+    return []
 
 
 def draw_document(doc: LadderDocument) -> str:

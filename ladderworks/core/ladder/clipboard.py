@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from ladderworks.core.address import AddressError, parse_address
@@ -29,6 +29,7 @@ from ladderworks.core.ladder.model import (
     Element,
     FunctionBox,
     LadderNetwork,
+    Pin,
     Wire,
 )
 
@@ -70,6 +71,11 @@ def _element_record(element: Element) -> dict[str, Any]:
         if element.outputs:  # its further output pins (Fatek's FO1 …): row and contact
             record["outputs"] = [[offset, _element_record(contact)]
                                  for offset, contact in element.outputs]
+        if element.named:  # drawn from a source's model (S7): its pins and words
+            record["named"] = [[p.name, p.row, p.output, p.text, p.negated]
+                               for p in element.named]
+            record.update(title=element.title, type=element.type_name,
+                          instance=element.instance, origin=[list(o) for o in element.origin])
     else:
         record = {"kind": "contact" if isinstance(element, Contact) else "coil",
                   "address": str(element.address) if element.address else None,
@@ -81,6 +87,8 @@ def _element_record(element: Element) -> dict[str, Any]:
         if isinstance(element, Contact) and element.function:  # an edge / comparison contact
             record["function"] = element.function
             record["params"] = [p if isinstance(p, int) else str(p) for p in element.params]
+        if element.texts or element.mark:  # operands as a source writes them (S7)
+            record.update(texts=list(element.texts), mark=element.mark)
     if element.comment:
         record["comment"] = element.comment
     if element.lead:
@@ -112,6 +120,8 @@ def _element_from(record: dict[str, Any]) -> Element:
     lead = tuple(str(x) for x in record.get("lead", []))
     if kind == "wire":
         return WIRE
+    if kind == "box" and "named" in record:
+        return _named_box(record, comment, lead)
     if kind == "box":
         name = str(record["name"])
         values = list(record.get("params", []))
@@ -131,6 +141,32 @@ def _element_from(record: dict[str, Any]) -> Element:
                 raise ValueError("outputs")
             outputs.append((int(offset), contact))
         return FunctionBox(default.name, params, comment, lead, pins, height, tuple(outputs))
+    if kind in ("contact", "coil"):
+        texts = tuple(str(t) for t in record.get("texts", []))
+        return replace(_plain_element(kind, record, comment, lead), texts=texts,
+                       mark=str(record.get("mark", "")))
+    raise ValueError(kind)
+
+
+def _named_box(record: dict[str, Any], comment: str, lead: tuple[str, ...]) -> FunctionBox:
+    """A box with named pins (S7's), its sizes checked: a damaged draft must not fill memory."""
+    named = tuple(Pin(str(n), int(r), bool(o), str(t), bool(g))
+                  for n, r, o, t, g in record["named"])
+    height = int(record.get("height", 1))
+    pins = tuple(int(p) for p in record.get("pins", []))
+    if not 1 <= height <= MAX_ROWS or any(not 0 <= p.row < height for p in named) \
+            or any(not 0 <= p < height for p in pins):
+        raise ValueError("pins")
+    values = list(record.get("params", []))
+    params = tuple(_parse_param(v) for v in values)
+    origin = tuple((str(k), str(v)) for k, v in record.get("origin", []))
+    return FunctionBox(str(record["name"]), params, comment, lead, pins, height, (), named,
+                       str(record.get("title", "")), str(record.get("type", "")),
+                       str(record.get("instance", "")), origin)
+
+
+def _plain_element(kind: object, record: dict[str, Any], comment: str,
+                   lead: tuple[str, ...]) -> Contact | Coil:
     if kind in ("contact", "coil"):
         text = record.get("address")
         address = parse_address(str(text), want_bit=True) if text else None

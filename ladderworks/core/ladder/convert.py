@@ -10,6 +10,7 @@ from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.edits import EditRefused
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.model import LadderDocument, LadderNetwork
+from ladderworks.core.ladder.source_model import source_model
 
 DRAFT_MARK = "@grid "  # a saved draft network: comment lines `//@grid <grid text line>`
 
@@ -112,6 +113,10 @@ def program_to_ladder(program: Program, kept: Kept | None = None) -> LadderDocum
     from, so ladder_to_program can write an unchanged one exactly as it was read."""
     doc = LadderDocument(header=list(program.header), footer=list(program.footer),
                          before=list(program.before), after=list(program.after), origin=program)
+    model = source_model(program)
+    if model is not None:  # drawn from the dialect's own model (S7's graph), not the engine's
+        doc.networks = model.draw()
+        return doc
     for network in program.networks:
         drafts, comments = split_drafts(network.comments)
         doc.networks.extend(drafts)
@@ -142,7 +147,16 @@ def ladder_to_program(doc: LadderDocument,
     lines before the next network (or at the end), so saving never loses a drawing. The
     program keeps the file, form, dialect and section views of the one the document came from
     (`doc.origin`), so Save rewrites only the networks that changed; a network still as it
-    was read (see `kept` of program_to_ladder) keeps its instructions as read."""
+    was read (see `kept` of program_to_ladder) keeps its instructions as read. A program
+    drawn from its dialect's model (source_model.py) is rebuilt by that model."""
+    model = source_model(doc.origin)
+    if model is not None and doc.origin is not None:
+        rebuilt, found = model.rebuild([n for n in doc.networks
+                                        if not (n.is_empty() and not n.comments)])
+        fresh, symbols = rebuilt.model, rebuilt.symbols  # its own: new names too
+        adopt_origin(rebuilt, doc.origin)
+        rebuilt.model, rebuilt.symbols = fresh, symbols or rebuilt.symbols
+        return rebuilt, found
     program = Program(header=list(doc.header), footer=list(doc.footer),
                       before=list(doc.before), after=list(doc.after))
     if doc.origin is not None:
@@ -182,4 +196,5 @@ def adopt_origin(program: Program, origin: Program) -> None:
     program.symbols = origin.symbols
     program.messages = origin.messages
     program.io_modules = origin.io_modules
+    program.model = origin.model
     program.graph = origin.graph

@@ -2,14 +2,17 @@
 
 from __future__ import annotations
 
-from collections import defaultdict
 from collections.abc import Callable
-from dataclasses import dataclass
 from itertools import pairwise
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.instructions import Kind, StackOp
+from ladderworks.core.ladder.grid_graph import Edge as _Edge
+from ladderworks.core.ladder.grid_graph import cycle_edge as _cycle_edge
+from ladderworks.core.ladder.grid_graph import joined as _joined
+from ladderworks.core.ladder.grid_graph import reach as _reach
+from ladderworks.core.ladder.grid_graph import reduce_block as _reduce
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
@@ -18,30 +21,15 @@ from ladderworks.core.ladder.logic import (
     Leaf,
     Logic,
     Output,
-    Parallel,
     Rung,
-    Undrawable,
     code_rung,
-    first_cell,
     inverted_inside,
     outputs_first,
-    parallel,
-    read_rung,
-    series,
     stack_row,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.reading import Undrawable, read_rung
 from ladderworks.core.ladder.row_contacts import contact_combine
-
-
-@dataclass(slots=True)
-class _Edge:
-    """A contact (or a reduced block) between two nets, power flowing src → dst."""
-
-    src: int
-    dst: int
-    logic: Logic
-    cell: Cell
 
 
 class NodeNets:
@@ -75,69 +63,6 @@ class NodeNets:
     def net(self, node: Cell) -> int:
         """The net of node (row, k)."""
         return self._find(node[0] * self.width + node[1])
-
-
-def _reach(start: set[int], edges: list[_Edge], forward: bool) -> set[int]:
-    seen = set(start)
-    todo = list(start)
-    nxt: dict[int, list[int]] = defaultdict(list)
-    for e in edges:
-        a, b = (e.src, e.dst) if forward else (e.dst, e.src)
-        nxt[a].append(b)
-    while todo:
-        n = todo.pop()
-        for m in nxt[n]:
-            if m not in seen:
-                seen.add(m)
-                todo.append(m)
-    return seen
-
-
-def _joined(a: int, goal: set[int], edges: list[_Edge], skip: _Edge) -> bool:
-    """True when net `a` reaches `goal` through other elements in either direction."""
-    others = [e for e in edges if e is not skip]
-    both = others + [_Edge(e.dst, e.src, e.logic, e.cell) for e in others]
-    return bool(_reach({a}, both, True) & goal)
-
-
-def _reduce(edges: list[_Edge], left: int, target: int) -> Logic | _Edge:
-    """Series/parallel reduction between the rail and a target net; returns the block, or an
-    element of what is left when the circuit is not series/parallel (a bridge)."""
-    edges = list(edges)
-    changed = True
-    while changed and edges:
-        changed = False
-        groups: dict[tuple[int, int], list[_Edge]] = defaultdict(list)
-        for e in edges:
-            groups[(e.src, e.dst)].append(e)
-        for (src, dst), group in groups.items():
-            if len(group) > 1:
-                logic = group[0].logic
-                for e in group[1:]:
-                    logic = parallel(logic, e.logic)
-                assert isinstance(logic, Parallel)
-                logic = Parallel(tuple(sorted(logic.items, key=first_cell)))
-                cell = min(e.cell for e in group)
-                edges = [e for e in edges if e not in group] + [_Edge(src, dst, logic, cell)]
-                changed = True
-        ins: dict[int, list[_Edge]] = defaultdict(list)
-        outs: dict[int, list[_Edge]] = defaultdict(list)
-        for e in edges:
-            ins[e.dst].append(e)
-            outs[e.src].append(e)
-        for n in list(ins):
-            if n in (left, target) or len(ins[n]) != 1 or len(outs[n]) != 1:
-                continue
-            a, b = ins[n][0], outs[n][0]
-            if a is b or a not in edges or b not in edges:
-                continue
-            edges = [e for e in edges if e is not a and e is not b]
-            edges.append(_Edge(a.src, b.dst, series(a.logic, b.logic), min(a.cell, b.cell)))
-            changed = True
-    if len(edges) == 1 and edges[0].src == left and edges[0].dst == target:
-        return edges[0].logic
-    inner = [e for e in edges if e.src not in (left, target) and e.dst not in (left, target)]
-    return min(inner or edges, key=lambda e: e.cell)
 
 
 def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "seed",
@@ -219,10 +144,11 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
         pin_nets = [nets.net((br + offset, bc + box.width)) for offset, _ in box.outputs]
         if len({output, *pin_nets}) < len(pin_nets) + 1:
             report("coil-branch", box_anchor)  # two output pins joined
+        pin_blocks, pin_ends, edges = _pin_blocks(pin_nets, edges, coils, box_anchor, report)
         for cell, _, net in coils:
-            if output is None and net not in pin_nets:
+            if output is None and net not in pin_ends:
                 report("box-output", cell, name=box.name)
-            elif net != output and net not in pin_nets:
+            elif net != output and net not in pin_ends:
                 report("coil-branch", cell)
         for i, target in enumerate(targets):
             if target == left:
@@ -294,20 +220,62 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
             report("bridge", result.cell)
             return None, diags
         blocks.append(result)
-    pin_nets = [nets.net((box_anchor[0] + offset, box_anchor[1] + box.width))
-                for offset, _ in box.outputs]
-    own = [item for item in coils if item[2] not in pin_nets]
-    pins = [(contact, [item for item in coils if item[2] == net])
-            for (_, contact), net in zip(box.outputs, pin_nets, strict=True)]
+    own = [item for item in coils if item[2] not in pin_ends]
+    pins = [(contact, block, [item for item in coils if item[2] == net])
+            for (_, contact), block, net in zip(box.outputs, pin_blocks, pin_ends, strict=True)]
     rung = Rung(box=box, inputs=blocks, coils=[coil for _, coil, _ in own],
-                pins=[(contact, [coil for _, coil, _ in items]) for contact, items in pins],
+                pins=[(contact, block, [coil for _, coil, _ in items])
+                      for contact, block, items in pins],
                 box_cell=box_anchor,
                 coil_cells=[cell for cell, _, _ in own]
-                + [cell for _, items in pins for cell, _, _ in items])
+                + [cell for _, _, items in pins for cell, _, _ in items])
     _check_depth(rung, report)
     if has_errors(diags):
         return None, diags
     return rung, diags
+
+
+def _pin_blocks(pin_nets: list[int], edges: list[_Edge], coils: list, box_cell: Cell,
+                report: Callable[..., None]
+                ) -> tuple[list[Logic | None], list[int], list[_Edge]]:
+    """Each output pin's block in series after it (None: its coils hang on the pin) and the
+    net its coils hang on; the edges left for the box's inputs. A pin's contacts must all lead
+    to one net of coils, and no other path may reach them."""
+    blocks: list[Logic | None] = []
+    ends: list[int] = []
+    taken: set[int] = set()
+    for pin in pin_nets:
+        reach = _reach({pin}, edges, True)
+        own = [e for e in edges if e.src in reach]
+        taken.update(id(e) for e in own)
+        if not own:
+            blocks.append(None)
+            ends.append(pin)
+            continue
+        hung = {net for _, _, net in coils if net in reach}
+        if len(hung) != 1:
+            report("open-circuit" if not hung else "coil-branch", own[0].cell)
+            blocks.append(None)
+            ends.append(pin)
+            continue
+        end = hung.pop()
+        feeding = _reach({end}, own, False)
+        for e in own:
+            if e.dst not in feeding:
+                report("open-circuit", e.cell)
+        entering = [e for e in edges if e.dst in reach and e.src not in reach]
+        if entering:
+            report("bridge", entering[0].cell)  # other logic joins the pin's block
+        result = _reduce([e for e in own if e.dst in feeding], pin, end)
+        if isinstance(result, _Edge):
+            report("bridge", result.cell)
+            blocks.append(None)
+        else:
+            blocks.append(result)
+        ends.append(end)
+    if len(set(ends)) < len(ends):
+        report("coil-branch", box_cell)  # two pins' blocks joined
+    return blocks, ends, [e for e in edges if id(e) not in taken]
 
 
 def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
@@ -414,33 +382,6 @@ def _box_param_problems(box: FunctionBox, dialect: str = "seed") -> list[Diagnos
 
     words = print_instruction(Instruction(box.name, params=box.params)).split()
     return function_params(box.name, words[1:], dialect)[1]
-
-
-def _cycle_edge(edges: list[_Edge]) -> _Edge | None:
-    """An element on a loop (power would have to flow back to the left), or None."""
-    outs: dict[int, list[_Edge]] = defaultdict(list)
-    for e in edges:
-        outs[e.src].append(e)
-    state: dict[int, int] = {}
-
-    def visit(n: int) -> _Edge | None:
-        state[n] = 1
-        for e in outs[n]:
-            if state.get(e.dst) == 1:
-                return e
-            if e.dst not in state:
-                found = visit(e.dst)
-                if found is not None:
-                    return found
-        state[n] = 2
-        return None
-
-    for e in sorted(edges, key=lambda e: e.cell):
-        if e.src not in state:
-            found = visit(e.src)
-            if found is not None:
-                return found
-    return None
 
 
 def _check_depth(rung: Rung, report: Callable[..., None]) -> None:

@@ -314,7 +314,21 @@ def set_address(network: LadderNetwork, row: int, col: int, address: str | Addre
     element = found[1]
     if isinstance(element, Contact) and element.function:  # an address makes it a plain contact
         element = replace(element, function="", params=())
-    work.cells[found[0]] = replace(element, address=value)
+    work.cells[found[0]] = replace(element, address=value, texts=())
+    return _change(network, work)
+
+
+def set_operand(network: LadderNetwork, row: int, col: int, text: str,
+                address: Address | None) -> Edit:
+    """Set the operand of a contact or coil drawn from a source's own model, as the source
+    writes it (`"Start"`) with its engine address (source_model.py checks the text)."""
+    found = network.element_at(row, col)
+    if found is None or not isinstance(found[1], Contact | Coil):
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    work = network.copy()
+    element = found[1]
+    work.cells[found[0]] = replace(element, address=address,
+                                   texts=(text, *element.texts[1:]))
     return _change(network, work)
 
 

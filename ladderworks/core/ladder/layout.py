@@ -12,10 +12,8 @@ from ladderworks.core.ladder.logic import (
     Output,
     Rung,
     Series,
-    Undrawable,
     code_rung,
     has_bare_branch,
-    read_rung,
 )
 from ladderworks.core.ladder.model import (
     BOX_WIDTH,
@@ -26,6 +24,7 @@ from ladderworks.core.ladder.model import (
     FunctionBox,
     LadderNetwork,
 )
+from ladderworks.core.ladder.reading import Undrawable, read_rung
 
 
 def size(logic: Logic) -> tuple[int, int]:
@@ -76,9 +75,10 @@ def draw_rung(rung: Rung, columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
             net.cells[(0, 0)] = box
             box_col = 0
         else:
-            need = max(w for w, _ in sizes) + BOX_WIDTH
+            after = _pins_width(rung)
+            need = max(w for w, _ in sizes) + BOX_WIDTH + after
             net = LadderNetwork(max(columns, need), 1)
-            box_col = net.columns - BOX_WIDTH
+            box_col = net.columns - BOX_WIDTH - after
             pins: list[int] = []
             row = 0
             for logic, (w, h) in zip(rung.inputs, sizes, strict=True):
@@ -103,17 +103,27 @@ def draw_rung(rung: Rung, columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
     return net
 
 
+def _pins_width(rung: Rung) -> int:
+    """Columns the blocks after a box's output pins need between the box and the coils."""
+    return max((size(block)[0] for _pin, block, _coils in rung.pins if block is not None),
+               default=0)
+
+
 def _draw_pins(net: LadderNetwork, rung: Rung, box_col: int) -> None:
-    """A box's further output pins on the rows below its W1 coils, each pin's coils on its
-    row and below it; the box grows to reach the last pin."""
+    """A box's further output pins on the rows below its W1 coils, each pin's block after it
+    and its coils on its row and below it; the box grows to reach the last pin."""
     row = max(1, len(rung.coils))
     outputs = []
-    for contact, coils in rung.pins:
+    for contact, block, coils in rung.pins:
         outputs.append((row, contact))
         for c in range(box_col + BOX_WIDTH, net.columns):
             net.cells[(row, c)] = WIRE
+        height = 1
+        if block is not None:
+            height = size(block)[1]
+            place_logic(net, block, row, box_col + BOX_WIDTH)
         _draw_coils(net, row, coils)
-        row += max(1, len(coils))
+        row += max(height, len(coils))
     box = net.cells[(0, box_col)]
     assert isinstance(box, FunctionBox)
     net.cells[(0, box_col)] = replace(box, outputs=tuple(outputs),

@@ -36,6 +36,10 @@ class Contact:
     lead: tuple[str, ...] = ()  # comment lines written just before its instruction
     function: str = ""  # a functional row drawn as a contact ("" for RD/AND/OR)
     params: tuple[ParamValue, ...] = ()  # its operands
+    # its operands as the source writes them (an S7 symbol: "Start", #Timer.Q), shown
+    # instead of the address: the first above the contact, the others below
+    texts: tuple[str, ...] = ()
+    mark: str = ""  # what it shows in its middle when the source says (S7's P, N, >= Time)
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,6 +52,8 @@ class Coil:
     lead: tuple[str, ...] = ()
     write: Write = Write.OUT  # what the coil does with ST0: OUT (WRT), SET, RESET (RST)
     row: str = ""  # a dialect's own coil row it was read with (Fatek's OUT L), "" for the table's
+    texts: tuple[str, ...] = ()  # its operands as the source writes them (see Contact.texts)
+    mark: str = ""  # what it shows inside when the source says (S7's P, N, PT, RT, JMP)
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,6 +65,20 @@ WIRE = Wire()
 
 
 @dataclass(frozen=True, slots=True)
+class Pin:
+    """A named pin of a box as its source draws it (S7's IN, PT → Q, ET).
+
+    `row` is its row offset in the box; `text` the operand wired to it as the source writes
+    it ("T#10s", "Geçen Süre"), "" when power (a wire) comes in or goes out there."""
+
+    name: str
+    row: int
+    output: bool = False
+    text: str = ""
+    negated: bool = False
+
+
+@dataclass(frozen=True, slots=True)
 class FunctionBox:
     """A functional instruction drawn as a box anchored at its top-left cell.
 
@@ -67,6 +87,12 @@ class FunctionBox:
     one) leaves the right edge at the box's top row. `outputs`: its further output pins (bits
     of its OUTPUT_BYTE parameter, Fatek's FO1, FO2 …), each the row offset where it leaves the
     right edge and the contact that reads it in the code (`RD` of that bit).
+
+    A box drawn from a dialect's own graph (S7) names its pins: `named` holds every pin with
+    its operand; `title` is the name shown ("TON", a called block's), `type_name` the data type
+    under it ("Time"), `instance` the instance shown above it ("IEC_Timer_0_DB"), and
+    `origin` the dialect's own words for the part (key, value pairs) to write it back. Its
+    `name` is the row it runs as, when one row does (else `spec` is a shown-only row).
     """
 
     name: str
@@ -76,6 +102,11 @@ class FunctionBox:
     pins: tuple[int, ...] = ()
     height: int = 1
     outputs: tuple[tuple[int, Contact], ...] = ()
+    named: tuple[Pin, ...] = ()
+    title: str = ""
+    type_name: str = ""
+    instance: str = ""
+    origin: tuple[tuple[str, str], ...] = ()
 
     @classmethod
     def new(cls, name: str, params: tuple[ParamValue, ...] = (), comment: str = "",
@@ -89,17 +120,25 @@ class FunctionBox:
     def spec(self) -> InstructionSpec:
         """The instruction table row (`spec_for`: a `SUB.n` the table lacks has RAW params)."""
         spec = spec_for(self.name, len(self.params))
+        if spec is None and self.named:  # drawn from a graph, no row of its own: shown only
+            return InstructionSpec(self.name, Kind.FUNCTION, inputs=self.inputs,
+                                   title=self.title, title_tr=self.title)
         assert spec is not None, self.name
         return spec
 
     @property
     def inputs(self) -> tuple[str, ...]:
-        """Control input names, first to last (ACT last)."""
+        """Control input names, first to last (ACT last); a named box's power inputs."""
+        if self.named:
+            return tuple(pin.name for pin in self.named if not pin.output and not pin.text)
         return self.spec.inputs
 
     @property
     def has_output(self) -> bool:
-        """True when the box has a W1 output on its right."""
+        """True when the box has a W1 output on its right (a named box: a power output on its
+        top row)."""
+        if self.named:
+            return any(pin.output and not pin.text and pin.row == 0 for pin in self.named)
         return self.spec.w1
 
     @property
@@ -184,7 +223,7 @@ class LadderNetwork:
     def copy(self) -> LadderNetwork:
         """An independent copy (elements are immutable and shared)."""
         return LadderNetwork(self.columns, self.rows, dict(self.cells), set(self.links),
-                             list(self.comments), self.listing, self.source)
+                             list(self.comments), self.listing, self.source, self.label)
 
     def elements(self) -> Iterator[tuple[Cell, Element]]:
         """Anchor cell and element, top to bottom then left to right."""
@@ -279,7 +318,9 @@ def flip(element: Contact | Coil) -> Contact | Coil:
 
 def coil_mark(coil: Coil) -> str:
     """What a coil shows inside: S / R for SET / RST, the last word of a dialect's own coil
-    row's spelling (`L` for Fatek's OUT L), "" for WRT."""
+    row's spelling (`L` for Fatek's OUT L), the source's own mark (S7's P, PT), "" for WRT."""
+    if coil.mark:
+        return coil.mark
     own = lookup(coil.row) if coil.row else None
     if own is not None:
         return own.text_name.split()[-1]

@@ -115,8 +115,16 @@ def operands(function: str, params: tuple[object, ...]) -> tuple[object, ...]:
     return params[-1:] if is_edge(function) else params[-2:]
 
 
+def shown_mark(contact: Contact) -> str:
+    """The contact's own mark (a source's P, >=), else its row's (`mark`)."""
+    return contact.mark or mark(contact.function)
+
+
 def operand_texts(contact: Contact, spell: Spelling) -> list[str]:
-    """The contact's operands in the program's spelling (`X2`; `T0`, `K100`)."""
+    """The contact's operands in the program's spelling (`X2`; `T0`, `K100`), or as its
+    source writes them (`texts`)."""
+    if contact.texts:
+        return list(contact.texts)
     spec = lookup(contact.function)
     if spec is None:
         return [str(value) for value in contact.params]

@@ -25,9 +25,14 @@ from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.plc_session import PlcSnapshot
 
 
-def match_networks(networks: list[LadderNetwork], binary: BinaryProgram) -> list[list[int]] | None:
+def match_networks(networks: list[LadderNetwork], binary: BinaryProgram,
+                   spans: list[range] | None = None) -> list[list[int]] | None:
     """The binary's op indices for each drawn network ([] for blank ones), or None when the
-    drawing does not code to exactly the binary's ops."""
+    drawing does not code to exactly the binary's ops. `spans`: a drawing of a dialect's own
+    model (S7's graph, source_model.py) gives the program's networks each drawn network was
+    lowered to, the drawing already known to be the program (`spanned_ops`)."""
+    if spans is not None:
+        return spanned_ops(networks, binary, spans)
     groups = binary_networks(binary)
     result: list[list[int]] = []
     next_group = 0
@@ -50,8 +55,22 @@ def match_networks(networks: list[LadderNetwork], binary: BinaryProgram) -> list
     return result if next_group == len(groups) else None
 
 
+def spanned_ops(networks: list[LadderNetwork], binary: BinaryProgram,
+                spans: list[range]) -> list[list[int]]:
+    """The ops of each drawn network: those of the program's networks in its span (a network
+    past the spans, the blank one at the end, has none)."""
+    by_network: dict[int, list[int]] = {}
+    for index, op in enumerate(binary.ops):
+        by_network.setdefault(op.source.network, []).append(index)
+    return [[op for n in spans[i] for op in by_network.get(n, [])] if i < len(spans) else []
+            for i in range(len(networks))]
+
+
 def box_values(box: FunctionBox, snapshot: PlcSnapshot) -> list[str]:
-    """`R100=12` for each address parameter of a box (its data width read little-endian)."""
+    """`R100=12` for each address parameter of a box (its data width read little-endian); a
+    box drawn from a source's model (S7) shows its operands by name, not the engine's."""
+    if box.named:
+        return []
     spec = box.spec
     names = {p.name: value for p, value in zip(spec.params, box.params, strict=False)}
     out: list[str] = []

@@ -9,6 +9,8 @@ from PySide6.QtWidgets import QWidget
 from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
+from ladderworks.core.ladder.source_model import source_model
+from ladderworks.gui.docks.cell_map import program_matches
 from ladderworks.gui.docks.live_ladder import LivePower, match_networks
 from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.editor.view import LadderEditor
@@ -92,7 +94,8 @@ class OnlineMode(QObject):
             self._say(translate("PlcOnline", "On-line needs a compiled program in the PLC"))
             self._sync_check(False)
             return False
-        ops = match_networks(self.editor.model.networks, binary)
+        ops = self._model_ops(binary) if source_model(self.editor.model.document.origin) \
+            else match_networks(self.editor.model.networks, binary)
         if ops is None:
             self._say(translate("PlcOnline", "The drawing is not the program in the PLC: "
                                 "compile it in the PLC control screen first"))
@@ -105,6 +108,15 @@ class OnlineMode(QObject):
         self.refresh()
         self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))
         return True
+
+    def _model_ops(self, binary: BinaryProgram) -> list[list[int]] | None:
+        """A drawing of a dialect's own model (S7): the ops of each drawn network, by the
+        program's networks it was lowered to; None when the drawing is not the PLC's program."""
+        program, _found = self.editor.model.program()
+        model = source_model(program)
+        if program is None or model is None or not program_matches(program, binary):
+            return None
+        return match_networks(self.editor.model.networks, binary, model.spans())
 
     def _sync_check(self, on: bool) -> None:
         action = self.actions["action_plc_online"]

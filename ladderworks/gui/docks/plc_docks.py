@@ -22,6 +22,7 @@ from ladderworks.gui.docks.scenario import RECORD, RUN, ScenarioDock
 from ladderworks.gui.docks.tables import PlcTablesDock
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.time_travel import TimeTravel
+from ladderworks.gui.docks.watch_table import WatchTableDock
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.plc_state import PlcStateLabel
@@ -48,6 +49,7 @@ class PlcDocks:
     time_travel: TimeTravel  # PLC › Keep scan history
     modbus: ModbusDock  # PLC › Modbus server
     ascii_output: AsciiOutputDock  # PLC › ASCII output (a Fatek program's FUN 94)
+    watch: WatchTableDock  # PLC › Watch table (TIA's), on the main toolbar
     # STOP / RUN, the program, forcing: in the status bar and on the main toolbar
     states: tuple[PlcStateLabel, ...] = ()
 
@@ -166,6 +168,7 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     travel = TimeTravel(session, diagnostic, chart, online, window)
     modbus = ModbusDock(session, window)
     ascii_output = AsciiOutputDock(session, window)
+    watch = WatchTableDock(session, window)
 
     plc = "menu_plc"
     menus.add_dock(control, "action_dock_plc_control", RIGHT, plc, separator=True)
@@ -177,14 +180,15 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     menus.add_dock(tables, "action_dock_plc_tables", RIGHT)
     menus.add_dock(scenario, "action_dock_scenario", BOTTOM)
     menus.add_dock(ascii_output, "action_dock_ascii_output", BOTTOM, plc)
+    menus.add_dock(watch, "action_dock_watch_table", BOTTOM, plc)
     # tabbed while hidden: a tab group of shown docks sizes the window's first layout by
     # all of them, and leaves a tab bar behind with their titles
     for dock in (control, diagnostic, bits, tables, alarms, chart, scenario, force_list,
-                 ascii_output):
+                 ascii_output, watch):
         dock.hide()
         _raise_when_shown(window, dock)
     _tab(window, [control, diagnostic, bits, tables])
-    _tab(window, [alarms, chart, scenario, force_list, ascii_output])
+    _tab(window, [alarms, chart, scenario, force_list, ascii_output, watch])
     alarms.show()
 
     # one path (issue 18): Compile, START and STOP on the main toolbar and in the PLC menu
@@ -196,6 +200,7 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
               PlcStateLabel(session, lambda: control.loaded_name, window))
     states[0].setObjectName("toolbar_plc_state")
     menus.toolbar.addWidget(states[0])  # beside START / STOP
+    menus.toolbar.addAction(watch.toggleViewAction())  # after the PLC's state
     states[1].setObjectName("status_plc_state")
     window.statusBar().addPermanentWidget(states[1])
     menus.add_many(plc, [online.actions[name] for name in ACTION_NAMES], separator=True)
@@ -216,4 +221,4 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
         app.aboutToQuit.connect(modbus.stop_server)  # the server thread ends with the program
         app.aboutToQuit.connect(session.close)  # the scan process ends with the program
     return PlcDocks(session, control, diagnostic, force_list, online, bits, chart, alarms,
-                    tables, scenario, travel, modbus, ascii_output, states)
+                    tables, scenario, travel, modbus, ascii_output, watch, states)

@@ -20,6 +20,7 @@ from ladderworks.gui.editor.geometry import (
     network_height,
     network_width,
 )
+from ladderworks.gui.editor.pin_paint import BOX_TOP
 
 LIVE = QColor("#00a000")
 LIVE_FILL = QColor(0, 200, 0, 70)
@@ -95,7 +96,7 @@ class PowerOverlay(QGraphicsItem):
                 if (row, col) in power.nodes:
                     painter.drawLine(QPointF(x, mid), QPointF(x + CELL_W, mid))
             elif isinstance(element, Contact):
-                self._contact(painter, row, col, x, y, mid)
+                self._contact(painter, row, col, x, y, mid, 20 if "\n" in element.mark else 8)
             elif isinstance(element, Coil):
                 self._coil(painter, row, col, x, y, mid)
             elif isinstance(element, FunctionBox):
@@ -111,9 +112,9 @@ class PowerOverlay(QGraphicsItem):
                                         4, 4)
 
     def _contact(self, painter: QPainter, row: int, col: int, x: float, y: float,
-                 mid: float) -> None:
+                 mid: float, half: float = 8) -> None:
         power = self.power
-        left, right = x + CELL_W / 2 - 8, x + CELL_W / 2 + 8
+        left, right = x + CELL_W / 2 - half, x + CELL_W / 2 + half  # a comparison: wider
         if (row, col) in power.nodes:
             painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         if (row, col) in power.closed:
@@ -143,8 +144,12 @@ class PowerOverlay(QGraphicsItem):
                 py = y + pin * self.rows.height + self.rows.wire
                 painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
         active = bool(pins) and pins[-1]  # ACT is the last control input
+        top = 6.0
+        if box.named:  # a source's box (S7): its main input first, under its instance
+            active, top = bool(pins) and pins[0], BOX_TOP
         if active or (row, col) in self.power.box_out:
-            painter.drawRect(QRectF(x + 10, y + 6, width - 20, box.height * self.rows.height - 12))
+            painter.drawRect(QRectF(x + 10, y + top, width - 20,
+                                    box.height * self.rows.height - top - 6))
         if (row, col) in self.power.box_out:
             py = y + self.rows.wire
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))

@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QLabel, QLineEdit
 from ladderworks.core import ladder as core
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.ladder import Coil, Contact, EditRefused
+from ladderworks.core.ladder.source_model import source_model
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.geometry import CELL_W, COMMENT_H, LEFT, cell_origin
 from ladderworks.gui.editor.grid_view import GridView
@@ -47,12 +48,16 @@ class InlineEdit(QObject):
             return
         element = found[1]
         text = self.editor.spell_address(element.address) if element.address is not None else ""
+        own = source_model(self.editor.model.document.origin) is not None
+        if own:  # the operand as the source writes it ("Start")
+            text = element.texts[0] if element.texts else text
         if element.comment:
             text += "  // " + element.comment
         x, y = cell_origin(net, row, col, self.editor.layout_.rows[index])
         rect = QRectF(x - 10, self.editor.layout_.tops[index] + y, CELL_W + 60, 24)
-        self._open(("address", index, row, col), text, rect,
-                   translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)"))
+        hint = translate("LadderEditor", 'Operand, e.g. "Start", %I0.1, #Run (// comment)') \
+            if own else translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)")
+        self._open(("address", index, row, col), text, rect, hint)
         self.placed_step = self.editor.undo_stack.index() if placed else None
 
     def open_comment(self, index: int, line: int) -> None:
@@ -147,6 +152,16 @@ class InlineEdit(QObject):
         assert found is not None
         element = found[1]
         assert isinstance(element, Contact | Coil)
+        model = source_model(editor.model.document.origin)
+        if model is not None:  # drawn from the source's own model (S7): its operand as written
+            operand = model.operand(address_text)
+            if isinstance(operand, Diagnostic):
+                self._refuse(operand)
+                return
+            self.edits.set_operand(index, row, col, operand[0], operand[1],
+                                   comment if comment != element.comment else None)
+            self.close()
+            return
         typed = editor.typed_bit(address_text, element)
         if isinstance(typed, Diagnostic):  # a dialect's reader refuses it (`OUT X0`, `X8`)
             self._refuse(typed)

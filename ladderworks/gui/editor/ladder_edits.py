@@ -11,25 +11,32 @@ from PySide6.QtWidgets import QApplication
 
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
-from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Diagnostic
 from ladderworks.core.dialects.functions import is_contact, placed_params
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
 from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, lookup
 from ladderworks.core.ladder import (
+    WIRE,
     Coil,
     Contact,
     EditRefused,
+    Element,
     FunctionBox,
     LadderNetwork,
     Selection,
+    Wire,
 )
+from ladderworks.core.ladder.output_pins import set_output_pins, shown_pins
+from ladderworks.core.ladder.source_model import source_model
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
 from ladderworks.gui.editor.grid_view import GridView
 from ladderworks.gui.editor.ladder_model import ends_program
 from ladderworks.gui.editor.step_name import StepName, editor_step
 from ladderworks.gui.function_dialog import FunctionDialog
+from ladderworks.gui.operand_dialog import OperandDialog
+from ladderworks.gui.output_pins_dialog import OutputPinsDialog
 
 translate = QCoreApplication.translate
 
@@ -75,6 +82,8 @@ class LadderEdits:
         self.open_address = open_address
         self.function_name = FUNCTIONS[0].name  # what the function tool places (the palette's)
         self.function_dialog: FunctionDialog | None = None
+        self.output_pins_dialog: OutputPinsDialog | None = None
+        self.operand_dialog: OperandDialog | None = None  # an S7 element's operands
 
     def run_edit(self, index: int, operation: Callable[[LadderNetwork], object],
                  name: StepName) -> bool:
@@ -106,6 +115,19 @@ class LadderEdits:
 
         return self.run_edit(index, address_and_comment,
                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), shown))
+
+    def set_operand(self, index: int, row: int, col: int, text: str, address: Address | None,
+                    comment: str | None = None) -> bool:
+        """The operand of a contact or coil drawn from a source's own model (S7's "Start"),
+        and its new `comment` (None: kept): one step."""
+
+        def operand_and_comment(network: LadderNetwork) -> None:
+            core.set_operand(network, row, col, text, address)
+            if comment is not None:
+                core.set_comment(network, row, col, comment)
+
+        return self.run_edit(index, operand_and_comment,
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
 
     def set_comments(self, index: int, lines: list[str]) -> bool:
         """A network's comment lines."""
@@ -175,6 +197,8 @@ class LadderEdits:
     ) -> None:
         """The function property table; on OK the box is placed (or its parameters set). A
         dialect's edge or comparison row (`is_contact`) is placed as a contact."""
+        if self.open_operand_dialog(index, row, col, name, box):
+            return  # drawn from its source's own model (S7): TIA's element and operands
         spec = box.spec if box is not None else lookup(name)
         if spec is None:
             return
@@ -219,6 +243,8 @@ class LadderEdits:
                             contact: Contact | None = None) -> None:
         """The operands of a dialect's edge or comparison contact (row `name`); on OK the
         contact is placed at the cell (or, given `contact`, its operands and comment set)."""
+        if self.open_operand_dialog(index, row, col, name, contact):
+            return
         spec = lookup(contact.function if contact is not None else name)
         if spec is None:
             return
@@ -248,6 +274,41 @@ class LadderEdits:
 
         dialog.accepted.connect(done)
         dialog.open()
+
+    def open_operand_dialog(self, index: int, row: int, col: int, name: str,
+                            element: Element | None = None) -> bool:
+        """In a program drawn from its source's own model (S7): the element palette row
+        `name` places (or `element`) with its operands typed in a dialog, placed (or changed)
+        on OK. False for any other program."""
+        model = source_model(self.grid.model.document.origin)
+        if model is None:
+            return False
+        element = element if element is not None else model.palette(name)
+        if element is None or isinstance(element, Wire):  # S7's LABEL: the network's label
+            self.grid.message.emit(translate(
+                "LadderEditor", "This instruction is not placed from the palette in this "
+                "program"))
+            return True
+        placing = self.grid.networks[index].element_at(row, col) is None or \
+            self.grid.networks[index].element_at(row, col) == ((row, col), WIRE)
+        title = element.title if isinstance(element, FunctionBox) else \
+            element.mark.split("\n")[0] or name
+        dialog = OperandDialog(title, model.operands(element), self.grid)
+        self.operand_dialog = dialog
+        step = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"), title) if placing \
+            else editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"), title)
+
+        def done() -> None:
+            changed = model.with_operands(element, dialog.texts())
+            if not placing:
+                self.run_edit(index, lambda n: core.replace_element(n, row, col, changed), step)
+            else:  # a comparison at the rail as TIA has it (no leading always-on contact)
+                self.run_edit(index, lambda n: core.place_wired(n, row, col, changed), step)
+            self.grid.setFocus()
+
+        dialog.accepted.connect(done)
+        dialog.open()
+        return True
 
     # -- at the cursor (menus, keys) -------------------------------------------------------
 
@@ -287,6 +348,31 @@ class LadderEdits:
     def or_at_cursor(self) -> None:
         """OR on the element at the cursor (a parallel contact or coil)."""
         self.add_parallel(*self._cursor_target())
+
+    def output_pins_at_cursor(self) -> None:
+        """The output pins dialog for the box at the cursor (Fatek's FO1 … FO7); on OK the
+        box shows the checked ones (one undo step). A message when no such box is there."""
+        index, row, col = self._cursor_target()
+        networks = self.grid.networks
+        found = networks[index].element_at(row, col) if index < len(networks) else None
+        box = found[1] if found is not None else None
+        if not isinstance(box, FunctionBox) or box.output_byte() is None:
+            self.grid.message.emit(diagnostic_text(Diagnostic(
+                "edit-no-pins", {"row": row, "col": col})))
+            return
+        dialect = self.grid.model.dialect
+        name = spelling(dialect).name(box.spec) if dialect else box.name
+        dialog = OutputPinsDialog(name, shown_pins(box), self.grid)
+        self.output_pins_dialog = dialog
+
+        def done() -> None:
+            bits = dialog.bits()
+            self.run_edit(index, lambda n: set_output_pins(n, row, col, bits),
+                          editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Output pins")))
+            self.grid.setFocus()
+
+        dialog.accepted.connect(done)
+        dialog.open()
 
     def insert_row_before(self) -> None:
         """Insert an empty row before the cursor's row."""

@@ -36,6 +36,7 @@ from ladderworks.gui.editor.label_text import (
     shows_comment,
     wrapped,
 )
+from ladderworks.gui.editor.pin_paint import paint_named_box
 from ladderworks.gui.translation import instruction_label, ui_is_turkish
 
 INK = QColor("#1a1a1a")
@@ -166,7 +167,7 @@ class NetworkItem(QGraphicsItem):
         exposed = option.exposedRect
         for (row, col), element in net.elements():
             x, y = cell_origin(net, row, col, rows)
-            if not exposed.intersects(QRectF(x, y, CELL_W * 2, rows.height * 8)):
+            if not exposed.intersects(QRectF(x - CELL_W, y, CELL_W * 4, rows.height * 8)):
                 continue
             painter.setPen(ink)
             if isinstance(element, Wire):
@@ -214,6 +215,14 @@ class NetworkItem(QGraphicsItem):
         return cached
 
     def _label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
+        if element.texts or (isinstance(element, Coil) and element.mark):  # as written
+            first = element.texts[0] if element.texts else ""
+            below = " ".join(element.texts[1:])
+            if not below and element.address is not None:  # "Start" over its %I0.0
+                below = self.spelling.address(element.address)
+            if not self.rows.symbol:
+                return first, "", []
+            return first, below, []
         if isinstance(element, Contact) and element.function:  # operands above / below
             texts = row_contacts.operand_texts(element, self.spelling)
             if not self.rows.symbol:  # no line under the element: both above
@@ -236,8 +245,8 @@ class NetworkItem(QGraphicsItem):
                 label_font: QFont, small_font: QFont) -> None:
         """The address above the element; its symbol and comment lines under it."""
         address, symbol, lines = self.label_lines(element)
-        painter.setFont(label_font)
-        painter.setPen(INK if element.address is not None
+        painter.setFont(fitted_font(label_font, address, CELL_W - 2))
+        painter.setPen(INK if element.address is not None or element.texts
                        or (isinstance(element, Contact) and element.function) else ERROR)
         painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, address)
         below = y + self.rows.wire + 12
@@ -258,7 +267,8 @@ class NetworkItem(QGraphicsItem):
     def _paint_contact(self, painter: QPainter, element: Contact, x: float, y: float,
                        label_font: QFont, small_font: QFont) -> None:
         mid = y + self.rows.wire
-        left, right = x + CELL_W / 2 - 8, x + CELL_W / 2 + 8
+        half = 20 if "\n" in element.mark else 8  # a comparison over its type: wider
+        left, right = x + CELL_W / 2 - half, x + CELL_W / 2 + half
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         painter.drawLine(QPointF(right, mid), QPointF(x + CELL_W, mid))
         painter.drawLine(QPointF(left, mid - 11), QPointF(left, mid + 11))
@@ -266,9 +276,11 @@ class NetworkItem(QGraphicsItem):
         if element.negated:
             painter.drawLine(QPointF(left - 3, mid + 11), QPointF(right + 3, mid - 11))
         if element.function:  # ↑ / ↓ of an edge, the operator of a comparison
-            painter.setFont(small_font)
-            painter.drawText(QRectF(left - 6, mid - 9, right - left + 12, 18),
-                             Qt.AlignmentFlag.AlignCenter, row_contacts.mark(element.function))
+            mark = row_contacts.shown_mark(element)  # a source's own: P, >= over its type
+            painter.setFont(fitted_font(small_font, max(mark.split("\n"), key=len),
+                                        right - left + 10))
+            painter.drawText(QRectF(left - 6, mid - 11, right - left + 12, 22),
+                             Qt.AlignmentFlag.AlignCenter, mark)
             if not row_contacts.simulated(element.function):  # kept, not run: amber frame
                 pen = painter.pen()
                 painter.setPen(QPen(NOT_SIMULATED, 1.5, Qt.PenStyle.DashLine))
@@ -279,7 +291,9 @@ class NetworkItem(QGraphicsItem):
     def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,
                     label_font: QFont, small_font: QFont) -> None:
         mid = y + self.rows.wire
-        left, right = x + CELL_W / 2 - 10, x + CELL_W / 2 + 10
+        mark = coil_mark(element)  # (S) / (R), as LADDER-III draws them; Fatek's (L)
+        half = 10 if len(mark) < 2 else 20  # a word in it (S7's JMP, RET, PT): wider
+        left, right = x + CELL_W / 2 - half, x + CELL_W / 2 + half
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         end = x + CELL_W if col >= self.network.columns else right + 6
         painter.drawLine(QPointF(right, mid), QPointF(end, mid))
@@ -287,9 +301,9 @@ class NetworkItem(QGraphicsItem):
         painter.drawArc(QRectF(right - 14, mid - 11, 14, 22), -80 * 16, 160 * 16)
         if element.negated:
             painter.drawLine(QPointF(left, mid + 11), QPointF(right, mid - 11))
-        mark = coil_mark(element)  # (S) / (R), as LADDER-III draws them; Fatek's (L)
         if mark:
-            painter.setFont(label_font)
+            painter.setFont(fitted_font(label_font if len(mark) < 2 else small_font, mark,
+                                        right - left - 4))
             painter.drawText(QRectF(left, mid - 9, right - left, 18), Qt.AlignmentFlag.AlignCenter,
                              mark)
         self._labels(painter, element, x, y, label_font, small_font)
@@ -297,6 +311,9 @@ class NetworkItem(QGraphicsItem):
     def _paint_box(self, painter: QPainter, box: FunctionBox, x: float, y: float,
                    label_font: QFont, small_font: QFont) -> None:
         rows = self.rows
+        if box.named:  # drawn from a source's graph: TIA's pins and operands
+            paint_named_box(painter, box, x, y, rows, label_font, small_font, BOX_FILL)
+            return
         width = box.width * CELL_W
         height = box.height * rows.height
         rect = QRectF(x + 10, y + 6, width - 20, height - 12)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ladderworks.core.dialects import parse_target
-from ladderworks.core.dialects.fatek.rows import WORD_ROWS
+from ladderworks.core.dialects.fatek.rows import NIBBLE_ROWS, TABLE_ROWS, WIDE_ROWS, WORD_ROWS
 from ladderworks.core.dialects.functions import (
     check_params,
     contact_rows,
@@ -50,8 +50,9 @@ def test_fatek_offers_fun_boxes_rst_and_edge_contacts() -> None:
     assert names == ["FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.MOV", "FBS.ADD",
                      "FBS.SUB", "FBS.MUL", "FBS.DIV", "FBS.INC", "FBS.DEC", "FBS.CMP",
                      "FBS.BCD", "FBS.BIN", *(spec.name for spec in WORD_ROWS),
-                     "FBS.ASCWR"]  # not FUN 140-143/176, nor an
-    # unknown FUN's box (FBS.FUN): kept, not simulated
+                     *(spec.name for spec in (*NIBBLE_ROWS, *WIDE_ROWS, *TABLE_ROWS)),
+                     "FBS.ASCWR"]
+    # not FUN 140-143/176, nor an unknown FUN's box (FBS.FUN): kept, not simulated
     assert [spec.name for spec in contact_rows("fatek")] == [  # the rows that start a rung
         f"FBS.{name}.ORG" for name in ("TU", "TD", "EQ", "GT", "LT", "NE", "GE", "LE")]
     assert structure_rows("fatek") == ()

@@ -7,7 +7,7 @@ from collections.abc import Iterable
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.listing import Record
 from ladderworks.core.il.program import Instruction
-from ladderworks.core.instructions import Kind
+from ladderworks.core.instructions import Combine, Kind
 
 _COILS = ("OUT", "OUTS", "OUTR", "SET", "RST")
 
@@ -27,20 +27,36 @@ def _is_coil(record: Record) -> bool:
     return not (record.mnemonic == "RST" and operand[:1] in ("T", "C"))
 
 
+def _in_series(ins: Instruction) -> bool:
+    """A plain contact in series after a pin (`AND X3`, `AND NOT X4`)."""
+    spec = ins.spec
+    return spec.kind is Kind.BASIC and spec.is_contact and spec.combine is Combine.AND \
+        and not spec.pushes
+
+
+def _series_record(record: Record) -> bool:
+    """`AND X3` / `AND NOT X4` (not an edge contact, not a TR point)."""
+    return record.mnemonic == "AND" and record.modifier in ("", "NOT")
+
+
 def on_the_box(instructions: list[Instruction], fo: Address, after: Iterable[Record]) -> bool:
     """Whether `FO n` stays on its box's network as a pin: the network ends with the box and
-    coils on its outputs only, and the records after `FO n` (to the next FO, END or the
-    network's end) are one or more coils."""
+    its outputs (coils on its pins, contacts in series after a pin), and the records after
+    `FO n` (to the next FO, END or the network's end) are contacts in series (`AND X3`,
+    `AND NOT X4`: drawn after the pin) then one or more coils."""
     last = next((i for i in range(len(instructions) - 1, -1, -1)
                  if instructions[i].spec.kind is Kind.FUNCTION), None)
     if last is None or fo not in instructions[last].params:
         return False
-    if not all(ins.spec.is_coil or _reads_byte(ins, fo) for ins in instructions[last + 1:]):
+    if not all(ins.spec.is_coil or _reads_byte(ins, fo) or _in_series(ins)
+               for ins in instructions[last + 1:]):
         return False
     count = 0
     for record in after:
         if record.mnemonic in ("FO", "END"):
             break
+        if not count and _series_record(record):
+            continue
         if not _is_coil(record):
             return False
         count += 1

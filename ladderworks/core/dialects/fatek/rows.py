@@ -5,6 +5,17 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ladderworks.core.dialects.fatek.row_parts import FO, MODE, OTHER, SUB_BASE
+from ladderworks.core.dialects.fatek.row_parts import fun_row as _row
+from ladderworks.core.dialects.fatek.row_parts import number as _number
+from ladderworks.core.dialects.fatek.row_parts import register as _register
+from ladderworks.core.dialects.fatek.row_parts import value as _value
+from ladderworks.core.dialects.fatek.rows_tables import (
+    ADDED_FAMILIES,
+    NIBBLE_ROWS,
+    TABLE_ROWS,
+    WIDE_ROWS,
+)
 from ladderworks.core.instruction_fields import Operation
 from ladderworks.core.instructions import (
     FUNCTION_OPCODE,
@@ -18,25 +29,7 @@ from ladderworks.core.instructions import (
     Write,
 )
 
-SUB_BASE = 20_000  # a Fatek row's SUB number: 20000 + FUN n (21000.. for the others)
-OTHER = 21_000
-INT32_LOW, INT32_HIGH = -(2**31), 2**31 - 1
-
-
-def _number(name: str, low: int, high: int) -> Param:
-    return Param(name, ParamKind.NUMBER, low, high)
-
-
-def _value(name: str) -> Param:
-    return Param(name, ParamKind.VALUE, INT32_LOW, INT32_HIGH, width=2)
-
-
-def _register(name: str, access: ParamAccess = ParamAccess.WRITE) -> Param:
-    return Param(name, ParamKind.ADDRESS, width=2, access=access)
-
-
-def _raw(name: str) -> Param:
-    return Param(name, ParamKind.RAW, INT32_LOW, INT32_HIGH)
+__all__ = ["OTHER", "SUB_BASE"]  # the SUB numbers, for the modules that read them here
 
 
 # A parameter's label on its operand line where Fatek's differs from the row's name
@@ -47,20 +40,6 @@ def operand_label(name: str) -> str:
     """The operand line's label of a row parameter: `D` for the destination, `PV` for a
     preset (FUN 7 UDCTR's `PV: 10`, the FBs manual §5.1), else the parameter's name."""
     return _LABELS.get(name, name)
-
-
-MODE = _number("mode", 0, 3)  # bit 0: the P (pulse) form, bit 1: the D (32-bit) form
-FO = _raw("fo")  # the box's output byte (FO0 bit 0 …)
-
-
-def _row(name: str, sub: int, mnemonic: str, title: str, title_tr: str, *,
-         inputs: tuple[str, ...] = ("EN",), params: tuple[Param, ...] = (),
-         w1: bool = True, cnc: bool = False,
-         operation: Operation = Operation.NONE) -> InstructionSpec:
-    return InstructionSpec(name, Kind.FUNCTION, sub, inputs=inputs, params=params, w1=w1,
-                           title=title, title_tr=title_tr, opcode=FUNCTION_OPCODE,
-                           mnemonic=mnemonic, cnc=cnc, source="fatek", dialect="fatek",
-                           operation=operation)
 
 
 # `OUT L` (retentive coil, Y only, 002:98): a basic row of its own, so a changed network is
@@ -106,7 +85,7 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
     _row("FBS.ABS", SUB_BASE + 28, "ABS", "Absolute value", "MUTLAK DEĞER",
          params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
     _row("FBS.EXT", SUB_BASE + 29, "EXT", "Sign extension", "İŞARET GENİŞLET",
-         params=(MODE, _value("S"), _register("output")), w1=False),
+         params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
     _mover_row("FBS.SHFL", 51, "SHFL", "Shift left", "SOLA KAYDIR", ("EN", "INB")),
     _mover_row("FBS.SHFR", 52, "SHFR", "Shift right", "SAĞA KAYDIR", ("EN", "INB")),
     _mover_row("FBS.ROTL", 53, "ROTL", "Rotate left", "SOLA DÖNDÜR", ("EN",)),
@@ -212,6 +191,9 @@ ROWS: tuple[InstructionSpec, ...] = (
     _row("FBS.BIN", SUB_BASE + 21, "BIN", "BCD to binary", "BCD'DEN İKİLİYE",
          params=(MODE, _value("S"), _register("output"), FO)),
     *WORD_ROWS,
+    *NIBBLE_ROWS,
+    *WIDE_ROWS,
+    *TABLE_ROWS,
     _row("FBS.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
          inputs=("EN", "PAU", "ABT"),
          params=(_number("MD", 0, 255), _register("S", ParamAccess.READ),
@@ -297,3 +279,5 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_contacts": tuple(spec.name for spec in PLACED),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }
+for _module, _names in ADDED_FAMILIES.items():
+    FAMILIES[_module] = (*FAMILIES.get(_module, ()), *_names)

@@ -38,6 +38,7 @@ DIALECT = Dialect(
     clocks=tuple((Address(Area.R, CLOCK_BYTE, bit), period, period // 2)
                  for bit, period in enumerate(CLOCK_PERIODS)),
     period_ms=10, extensions=(".s7dcl",), families=FAMILIES, byteorder="big",
+    untyped_format="hex",
     namer="ladderworks.core.dialects.s7.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.s7.printer:spelling",
     opener="ladderworks.core.dialects.s7.opening:open_path", refuse_changes="s7-save-changed",

@@ -108,6 +108,10 @@ class S7DeviceMap(DeviceMap):
         """The S7 spelling of an address (a byte address as its byte: `%MB2`)."""
         return format_absolute(address)
 
+    def format_sized(self, address: Address, width: int) -> str | None:
+        """The S7 spelling of a value of `width` bytes (`%MW2`, `%DB1.DBD4`)."""
+        return format_absolute(address, width)
+
     def width_at(self, address: Address) -> int:
         """A byte address's width: 1 (S7 says the width in the spelling)."""
         return 1

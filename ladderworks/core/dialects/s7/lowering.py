@@ -10,7 +10,7 @@ they read. A part the lowering cannot map gives a diagnostic at its network and 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
@@ -72,6 +72,11 @@ class BlockLowering:
     scope: tuple[str, ...] = ()
     depth: int = 0
     shown: set[str] = field(default_factory=set)  # parts shown, not simulated (shown_only)
+    # what the drawing maps back (drawing.py): each S7 network's engine networks, and each
+    # part's result and the instructions it was lowered to, by (network index, part uid)
+    spans: list[range] = field(default_factory=list)
+    emitted: dict[tuple[int, str], tuple[Expr | None, tuple[Instruction, ...]]] = field(
+        default_factory=dict)
 
     def lower_callee(self, callee: Block, scope: tuple[str, ...]
                      ) -> tuple[list[Network], list[Diagnostic]]:
@@ -110,12 +115,11 @@ class BlockLowering:
                 self.network(index, network)
             except LoweringError as error:  # left out, the others run: a warning [LW]
                 del self.networks[before:]
-                found = error.diagnostic
-                self.diagnostics.append(Diagnostic(found.code, found.args, found.line, 1,
-                                                   Severity.WARNING))
+                self.diagnostics.append(replace(error.diagnostic, severity=Severity.WARNING))
             if len(self.networks) > before:
                 title = network.title or f"Network {index}"
                 self.networks[before].comments = [title, *network.comment.splitlines()]
+            self.spans.append(range(before, len(self.networks)))
         if any(ins.name == "S7.JMP" and ins.params == (LabelRef(self.end_label),)
                for net in self.networks for ins in net.instructions):
             self.networks.append(Network([Instruction("S7.LABEL", None,
@@ -149,12 +153,14 @@ class BlockLowering:
         outputs: dict[str, Expr | None] = {}
         for part in graph.order(lambda uid: self.fail(index, network.part(uid), "s7-wire",
                                                       part=uid, why="a loop of wires")):
+            before = len(self.networks)
             outputs[part.uid] = self.part(index, graph, part, outputs)
+            self.emitted[(index, part.uid)] = (outputs[part.uid], tuple(
+                ins for net in self.networks[before:] for ins in net.instructions))
 
     def shown_only(self, index: int, where: Part, power: Expr, code: str, **args: object
                    ) -> Expr:
-        """A part not simulated, kept: a warning at its network and part; its ENO (`out`, `eno`)
-        follows its EN, its other outputs give no power, its operands stay as they are [LW]."""
+        """A part not simulated, kept (a warning): ENO follows EN, nothing else is done [LW]."""
         self.shown.add(where.uid)
         self.diagnostics.append(Diagnostic(code, {"network": index, "uid": where.uid, **args},
                                            where.line, 1, Severity.WARNING))
@@ -206,15 +212,10 @@ class BlockLowering:
     def place(self, index: int, part: Part, operand: Operand, instance: str = "",
               guess: str = "") -> Place:
         found = self.layout.resolve(self.block, operand, instance, self.scope)
-        program = self.layout.program
-        if found is None and (guess or operand.address) and operand.kind is \
-                OperandKind.GLOBAL and operand.path and program.block(operand.path[0]) is None \
-                and program.tag(operand.path[0]) is None:
-            # a tag of a table, or a member of a DB, not exported with the block [LW]
-            where = system_tags.declare(program, operand, guess)
-            self.diagnostics.append(Diagnostic("s7-tag-undeclared", {
-                "network": index, "uid": part.uid, "text": operand.display(), "type": where},
-                part.line, 1, Severity.WARNING))
+        undeclared = None if found else system_tags.declare(self.layout.program, operand, guess,
+                                                             index, part)
+        if undeclared is not None:  # a tag of a table, or a member of a DB, not exported [LW]
+            self.diagnostics.append(undeclared)
             found = self.layout.resolve(self.block, operand, instance, self.scope)
         if found is None and self.layout.full:
             raise self.fail(index, part, "s7-memory-full", text=operand.display())

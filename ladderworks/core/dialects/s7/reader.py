@@ -21,12 +21,13 @@ from ladderworks.core.dialects.s7.layout import (
     TIMER_MEMBERS,
     TIMER_TYPES,
     Layout,
+    size_of,
 )
-from ladderworks.core.dialects.s7.lowering import lower_block
 from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
+from ladderworks.core.dialects.s7.source import program_of
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
-from ladderworks.core.il.program import FileSource, Network, Program
+from ladderworks.core.il.program import FileSource, Program
 from ladderworks.core.il.textform import TextForm, decode_lines, encode_text
 from ladderworks.core.symbols import Symbol, SymbolTable
 
@@ -53,6 +54,12 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
     def add(name: str, address: Address, comment: str = "") -> None:
         table.add(address, Symbol(name, (comment,) if comment else ()))
 
+    def typed(name: str, type_name: str) -> None:
+        table.types.setdefault(name, (type_name, size_of(type_name)))
+
+    for block in program.blocks:  # every global DB laid out, used or not (a Modbus map's)
+        if block.kind == "GlobalDB":
+            layout.global_name((block.name,))
     for tag in program.tags:
         if tag.value:  # a user constant: no place, its value is used where it is named
             continue
@@ -63,18 +70,29 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
                 else f'"{tag.name}"'
             add(quoted, place.address, tag.comment)
             table.by_symbol.setdefault(tag.name, place.address)
+            typed(f'"{tag.name}"', tag.type_name)
     for section in ("Input", "Output", "InOut", "Static", "Temp"):
         for member in entry.members(section):
             place = layout.local(entry, (member.name,))
             if place is not None:
                 add(f"#{member.name}", place.address, member.comment)
                 table.by_symbol.setdefault(member.name, place.address)
+                typed(f"#{member.name}", member.type_name)
     own = (f"#{entry.name.lower()}",)
     for key, place in list(layout.places.items()):
+        if len(key) == 1 and key in layout.members and place.type_name == "Struct" \
+                and not key[0].startswith("#"):
+            member = layout.members[key]  # a DB itself: its name and whole size
+            table.types.setdefault(f'"{member.name}"', (
+                place.type_name, size_of(member.type_name, member.members)))
+            table.by_symbol.setdefault(f'"{member.name}"', place.address)
         if place.type_name == "Struct" or (len(key) < 2 and key[0].startswith("#")):
             continue
         names = [(layout.members[key[:n]].name if key[:n] in layout.members else key[n - 1])
                  for n in range(1, len(key) + 1)]
+        db = program.block(key[0]) if key[:1] not in layout.members else None
+        if db is not None:  # an instance DB named by its scope: as TIA spells it
+            names[0] = db.name
         if key[:1] == own:  # the entry block's own members: #Data.Count
             name = "#" + ".".join(names[1:])
         elif key[0].startswith("#"):  # another block's (an FC's): its members by block
@@ -83,6 +101,7 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
             name = ".".join([f'"{names[0]}"', *names[1:]])
         if name not in table.by_symbol:
             table.by_symbol[name] = place.address
+        typed(name, place.type_name)
         kind = place.type_name.lower()
         members = TIMER_MEMBERS if kind in TIMER_TYPES else COUNTER_MEMBERS \
             if kind in COUNTER_TYPES else {}
@@ -90,6 +109,7 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
             inner = layout.sub(key, (pin,))
             if inner is not None:
                 table.by_symbol.setdefault(f"{name}.{pin.upper()}", inner.address)
+                typed(f"{name}.{pin.upper()}", inner.type_name)
     # the instances' members (`"T1".Q`, `#Timer.ET`) resolve on demand in scenarios
     return table
 
@@ -104,15 +124,15 @@ def build(blocks: list[Parsed], tags: list, texts: dict[str, dict[str, str]],
     layout = Layout(program)
     code = [b for b in program.blocks if b.kind in ("OB", "FC", "FB")]
     entry = code[0] if code else None  # the file opened, or a folder's OB (put first)
-    networks: list[Network] = []
-    if entry is not None:
-        networks, found = lower_block(entry, layout)
-        diagnostics += found
-    result = Program(networks=networks, dialect=NAME)
-    if entry is not None:
-        result.symbols = _symbols(program, layout, entry)
-        result.title = {1: entry.name}
+    result, found = program_of(program, layout, entry, _finish)
+    result.dialect = NAME
+    diagnostics += found
     return result, program, layout
+
+
+def _finish(result: Program, program: S7Program, layout: Layout, entry: Block) -> None:
+    """The symbols of a (re)built program."""
+    result.symbols = _symbols(program, layout, entry)
 
 
 def _source(program: Program, form: TextForm, lines: list[str], ends: list[str]) -> None:

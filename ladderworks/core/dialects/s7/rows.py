@@ -2,7 +2,8 @@
 
 Names `S7.<name>`, SUB numbers 30000-31999, basic opcodes 0x60-0x6F. A typed box has a NUMBER
 parameter `type` (core/plc/typed.py's ValueType) and VALUE operands (a constant or an address).
-An instance (IEC_TIMER, IEC_COUNTER) is an ADDRESS of its bytes (layout.py).
+An instance (IEC_TIMER, IEC_COUNTER) is an ADDRESS of its bytes (layout.py). A comparison
+and the P/N contacts leave their result in ST0 (`w1`): the drawing's contacts of those rows.
 """
 
 from __future__ import annotations
@@ -95,7 +96,7 @@ ROWS: tuple[InstructionSpec, ...] = (
     _row("CTUD", 12, "Up/down counter (CTUD)", "İLERİ-GERİ SAYICI",
          inputs=("CU", "CD", "R", "LD"), params=(*_COUNTER, _optional("QD"))),
     *(_row(name, 20 + n, f"Compare {operation.value}", title_tr, inputs=("IN",),
-           params=(_type(), _value("IN1"), _value("IN2")), operation=operation)
+           params=(_type(), _value("IN1"), _value("IN2")), operation=operation, w1=True)
       for n, (name, operation, _title, title_tr) in enumerate(_COMPARES)),
     _row("IN_RANGE", 30, "Value within range (IN_RANGE)", "ARALIK İÇİNDE", inputs=("IN",),
          params=(_type(), _value("MIN"), _value("VAL"), _value("MAX"))),
@@ -106,9 +107,9 @@ ROWS: tuple[InstructionSpec, ...] = (
     _row("NOT_OK", 33, "Check invalidity (NOT_OK)", "GEÇERSİZLİK (NOT_OK)", inputs=("IN",),
          params=(_value("IN1"),)),
     _row("P", 40, "Rising edge contact (P)", "YÜKSELEN KENAR KONTAĞI", inputs=("IN",),
-         params=_EDGE, operation=Operation.RISING),
+         params=_EDGE, operation=Operation.RISING, w1=True),
     _row("N", 41, "Falling edge contact (N)", "DÜŞEN KENAR KONTAĞI", inputs=("IN",),
-         params=_EDGE, operation=Operation.FALLING),
+         params=_EDGE, operation=Operation.FALLING, w1=True),
     _row("P_COIL", 42, "Rising edge coil (P)", "YÜKSELEN KENAR BOBİNİ", inputs=("IN",),
          params=_EDGE),
     _row("N_COIL", 43, "Falling edge coil (N)", "DÜŞEN KENAR BOBİNİ", inputs=("IN",),

@@ -10,8 +10,9 @@ addresses there when the program's own tags do not declare them [LW].
 from __future__ import annotations
 
 from ladderworks.core.address import AddressError
+from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7.devices import parse_absolute
-from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, S7Program, Tag
+from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part, S7Program, Tag
 
 TABLE = "System memory (TIA's default names)"
 UNDECLARED = "Not in the tag tables read (laid out by LadderWorks)"
@@ -50,10 +51,16 @@ def implied(blocks: list[Block], tags: list[Tag]) -> list[Tag]:
     return list(found.values())
 
 
-def declare(program: S7Program, operand: Operand, guess: str) -> str:
+def declare(program: S7Program, operand: Operand, guess: str, network: int, part: Part
+            ) -> Diagnostic | None:
     """Make a tag of a global name nothing declares (`"DB".a.b` as one name) [LW]: at the
     address the export shows (Informative) when LadderWorks has that area, else of type
-    `guess`, laid out in the D area. Returns the address, else the type (for the warning)."""
+    `guess`, laid out in the D area; its warning at the network and part. None (nothing made)
+    for a name a block or tag has, or with neither address nor type."""
+    if not (guess or operand.address) or operand.kind is not OperandKind.GLOBAL or \
+            not operand.path or program.block(operand.path[0]) is not None or \
+            program.tag(operand.path[0]) is not None:
+        return None
     name = ".".join(operand.path)
     guess = _SPELLING.get(guess.lower(), guess)
     address = operand.address if len(operand.path) == 1 else ""
@@ -63,7 +70,9 @@ def declare(program: S7Program, operand: Operand, guess: str) -> str:
     except AddressError:
         address = ""
     program.tags.append(Tag(name, guess, address, "", UNDECLARED))
-    return address or guess
+    return Diagnostic("s7-tag-undeclared", {
+        "network": network, "uid": part.uid, "text": operand.display(),
+        "type": address or guess}, part.line, 1, Severity.WARNING)
 
 
 def constant_of(program: S7Program, operand: Operand) -> Operand | None:

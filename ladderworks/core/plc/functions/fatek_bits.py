@@ -1,6 +1,6 @@
 """Fatek FBs bit and word moves: FUN 9 MOV/, 10 TOGG, 37 ZNCMP, 40 BITRD, 41 BITWR, 42 BITMV,
-43 NBMV, 44 BYMV, 45 XCHG, 46 SWAP (docs/dialects.md, Fatek). `mode` bit 0 the P form, bit 1
-the D form."""
+43 NBMV, 44 BYMV, 45 XCHG, 46 SWAP, 47 UNIT, 48 DIST (docs/dialects.md, Fatek). `mode` bit 0
+the P form, bit 1 the D form."""
 
 from __future__ import annotations
 
@@ -150,3 +150,37 @@ def fatek_swap(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
         low = value & ((1 << half) - 1)
         ctx.memory.write(destination, signed(low << half | value >> half, size), size)
     return False
+
+
+def _nibbles(unite: bool) -> FunctionImpl:
+    """FUN 47 UNIT (S, N, D): nibble 0 of the N registers from S into nibbles 0 .. N - 1 of D,
+    its other nibbles 0; FUN 48 DIST (S, N, D): nibbles 0 .. N - 1 of S into nibble 0 of the N
+    registers from D, their other nibbles 0 (FBs manual p. 7-23). N outside 1-4: FO0 ERR,
+    nothing done."""
+
+    def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
+             params: tuple) -> bool:
+        """Unite or distribute N nibbles when the box runs."""
+        mode, source, count, destination, fo = params
+        if not runs(state, mode, inputs[0]):
+            return _held(state)
+        n = operand_value(ctx.memory, count, 2)
+        if not 1 <= n <= 4:
+            return _out(ctx, state, fo, True)
+        memory = ctx.memory
+        if unite:
+            value = 0
+            for k in range(n):
+                value |= (memory.read(source.offset(2 * k), 2, signed=False) & 0xF) << (4 * k)
+            memory.write(destination, signed(value, 2), 2)
+        else:
+            word = operand_value(memory, source, 2)
+            for k in range(n):
+                memory.write(destination.offset(2 * k), (word >> (4 * k)) & 0xF, 2)
+        return _out(ctx, state, fo, False)
+
+    return impl
+
+
+function("FBS.UNIT")(_nibbles(True))
+function("FBS.DIST")(_nibbles(False))

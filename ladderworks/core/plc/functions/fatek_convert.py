@@ -1,5 +1,6 @@
 """Fatek FBs conversions: FUN 20 →BCD and FUN 21 →BIN (docs/dialects.md, Fatek; the FBs-PLC
-manual's FUN 20 page). FO0 is ERR: set, and D kept, when S is out of the conversion's range."""
+manual's FUN 20 page: FO0 is ERR, set, and D kept, when S is out of the conversion's range), and
+the check code FUN 31 CRC16 (its page 7-10)."""
 
 from __future__ import annotations
 
@@ -50,3 +51,37 @@ def fatek_to_bin(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                  params: tuple) -> bool:
     """FUN 21 →BIN: D := the value of the BCD code in S; a nibble above 9: FO0 ERR, D kept."""
     return _convert(ctx, state, inputs, params, False)
+
+
+def crc16(data: bytes) -> int:
+    """The CRC16 of Modbus RTU (start 0xFFFF, polynomial 0xA001 reflected)."""
+    crc = 0xFFFF
+    for byte in data:
+        crc ^= byte
+        for _ in range(8):
+            crc = (crc >> 1) ^ 0xA001 if crc & 1 else crc >> 1
+    return crc
+
+
+@function("FBS.CRC16")
+def fatek_crc16(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
+                params: tuple) -> bool:
+    """FUN 31 CRC16 (MD, S, N, D): the CRC16 of the low bytes of the N registers from S (MD
+    0; MD 1 is reserved: ERR), its high byte in D, its low byte in D + 1. FO0 D=0; FO1 ERR: N
+    outside 1-256 or MD not 0, nothing written (FBs manual p. 7-10)."""
+    mode, kind, source, count, destination, fo = params
+    if not runs(state, mode, inputs[0]):
+        return bool(state.get("fo0", False))
+    memory = ctx.memory
+    n = operand_value(memory, count, 2)
+    area = memory.areas[source.area]
+    if kind != 0 or not 1 <= n <= 256 or source.byte + 2 * n > len(area):
+        write_outputs(memory, fo, False, True)
+        state["fo0"] = False
+        return False
+    crc = crc16(bytes(memory.read(source.offset(2 * k), 1) for k in range(n)))
+    memory.write(destination, crc >> 8, 2)
+    memory.write(destination.offset(2), crc & 0xFF, 2)
+    write_outputs(memory, fo, crc == 0, False)
+    state["fo0"] = crc == 0
+    return crc == 0

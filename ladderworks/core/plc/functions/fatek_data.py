@@ -123,6 +123,25 @@ function("FBS.INC")(_step(15))
 function("FBS.DEC")(_step(16))
 
 
+@function("FBS.DIV48")
+def fatek_divide48(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
+                   params: tuple) -> bool:
+    """FUN 23 DIV48: the 48-bit Sa (three registers, the first the lowest) divided by the
+    48-bit Sb, the quotient (truncated toward 0) in D's three registers; U/S = 1 unsigned, 0
+    signed. FO0 D=0, FO1 ERR: Sb = 0, D kept (FBs manual p. 7-2)."""
+    mode, sa, sb, destination, fo = params
+    if not runs(state, mode, inputs[0]):
+        return _held(state)
+    signed = not (len(inputs) > 1 and inputs[1])
+    a = ctx.memory.read(sa, 6, signed=signed)
+    b = ctx.memory.read(sb, 6, signed=signed)
+    if b == 0:
+        return _result(ctx, state, fo, False, True)
+    quotient = abs(a) // abs(b) * (1 if (a < 0) == (b < 0) else -1)
+    ctx.memory.write(destination, quotient, 6)
+    return _result(ctx, state, fo, quotient & (2**48 - 1) == 0, False)
+
+
 @function("FBS.CMP")
 def fatek_compare(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                   params: tuple) -> bool:

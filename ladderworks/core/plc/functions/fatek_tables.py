@@ -1,7 +1,7 @@
-"""Fatek FBs table functions: FUN 24 SUM, 25 MEAN, 100 R->T, 101 T->R, 103 BT_M, 104 T_SWP,
-107 T_FIL (docs/dialects.md, Fatek). A table is L consecutive registers (register pairs in the
-D form) from its first; L outside 1-256, or a table running past its area: ERR (FO0, FO1 for
-the pointer moves), nothing written."""
+"""Fatek FBs table functions: FUN 24 SUM, 25 MEAN, 100 R->T, 101 T->R, 102 T->T, 103 BT_M,
+104 T_SWP, 107 T_FIL (docs/dialects.md, Fatek). A table is L consecutive registers (register
+pairs in the D form) from its first; L outside 2-256 (SUM, MEAN: 1-256), or a table running
+past its area: ERR (FO0, FO1 for the pointer moves), nothing written."""
 
 from __future__ import annotations
 
@@ -16,16 +16,19 @@ from ladderworks.core.plc.functions.fatek_words import signed
 MAX_LENGTH = 256
 
 
-def _error(ctx: FunctionContext, state: dict, fo: object, error: bool) -> bool:
-    write_outputs(ctx.memory, fo, error)
-    state["fo0"] = error
-    return error
+def outputs(ctx: FunctionContext, state: dict, fo: object, *bits: bool) -> bool:
+    """Write the box's FO0, FO1 …; FO0 is also its W1 (kept for a scan it does not run)."""
+    write_outputs(ctx.memory, fo, *bits)
+    state["fo0"] = bits[0]
+    return bits[0]
 
 
-def _fits(ctx: FunctionContext, table: object, length: int, size: int) -> bool:
-    """Whether a table of `length` entries of `size` bytes starts at an address and ends
-    inside its area."""
-    return (isinstance(table, Address) and 1 <= length <= MAX_LENGTH
+def fits(ctx: FunctionContext, table: object, length: int, size: int, low: int = 2,
+         high: int = MAX_LENGTH) -> bool:
+    """Whether a table of `length` entries (`low` .. `high`: a table instruction's table has
+    2 or more, FBs manual p. 7-83) of `size` bytes starts at an address and ends inside its
+    area."""
+    return (isinstance(table, Address) and low <= length <= high
             and table.byte + length * size <= len(ctx.memory.areas[table.area]))
 
 
@@ -36,7 +39,8 @@ def _entries(ctx: FunctionContext, table: Address, length: int, size: int) -> li
 TableBody = Callable[[FunctionContext, tuple, int, int], None]
 
 
-def _table_box(length_at: int, tables: tuple[int, ...], body: TableBody) -> FunctionImpl:
+def _table_box(length_at: int, tables: tuple[int, ...], body: TableBody, low: int = 2
+               ) -> FunctionImpl:
     """A table FUN: when the box runs (its mode's plain or pulse form), the parameter at
     `length_at` gives L; every table parameter in `tables` must fit L entries, else ERR and
     nothing written; `body(ctx, params, L, entry size)` does the work."""
@@ -49,10 +53,10 @@ def _table_box(length_at: int, tables: tuple[int, ...], body: TableBody) -> Func
             return bool(state.get("fo0", False))
         size = width(mode)
         count = operand_value(ctx.memory, params[length_at], 2)
-        if not all(_fits(ctx, params[k], count, size) for k in tables):
-            return _error(ctx, state, fo, True)
+        if not all(fits(ctx, params[k], count, size, low) for k in tables):
+            return outputs(ctx, state, fo, True)
         body(ctx, params, count, size)
-        return _error(ctx, state, fo, False)
+        return outputs(ctx, state, fo, False)
 
     return impl
 
@@ -96,56 +100,61 @@ def _table_fill(ctx: FunctionContext, params: tuple, count: int, size: int) -> N
         ctx.memory.write(target.offset(k * size), value, size)
 
 
-function("FBS.SUM")(_table_box(2, (1,), _sum))
-function("FBS.MEAN")(_table_box(2, (1,), _mean))
+function("FBS.SUM")(_table_box(2, (1,), _sum, 1))
+function("FBS.MEAN")(_table_box(2, (1,), _mean, 1))
 function("FBS.BT_M")(_table_box(3, (1, 2), _block_move))
 function("FBS.T_SWP")(_table_box(3, (1, 2), _table_swap))
 function("FBS.T_FIL")(_table_box(3, (2,), _table_fill))
 
 
-def _pointer_move(to_table: bool) -> FunctionImpl:
-    """FUN 100 R→T (Rs, Td, L, Pr: Td[Pr] := Rs) and 101 T→R (Ts, L, Pr, Rd: Rd := Ts[Pr]).
-    Inputs EN, PIN, CLR: CLR = 1 sets Pr to 0 and does nothing else; after a move PIN = 1 moves
-    Pr on by one, up to L - 1 where it stays. FO0 PEND: the move was at the table's last entry;
-    FO1 ERR: Pr outside 0 .. L - 1 or L outside 1-256, nothing moved."""
+def _pointer_move(kind: str) -> FunctionImpl:
+    """FUN 100 R→T (Rs, Td, L, Pr: Td[Pr] := Rs), 101 T→R (Ts, L, Pr, Rd: Rd := Ts[Pr]) and
+    102 T→T (Ts, Td, L, Pr: Td[Pr] := Ts[Pr]). Inputs EN, PIN, CLR: CLR = 1 sets Pr to 0 and
+    does nothing else; after a move PIN = 1 moves Pr on by one, up to L - 1 where it stays.
+    FO0 PEND: the move was at the tables' last entry; FO1 ERR: Pr outside 0 .. L - 1 or L
+    outside 1-256, nothing moved. Pr is a 16-bit register in the D form too (FBs manual 7-83)."""
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
         """One pointer move when the box runs."""
-        if to_table:
-            mode, source, table, length, pointer, fo = params
+        mode, fo = params[0], params[-1]
+        tables: tuple[object, ...]
+        if kind == "R->T":
+            _m, source, table, length, pointer, _fo = params
+            tables = (table,)
+        elif kind == "T->R":
+            _m, table, length, pointer, source, _fo = params
+            tables = (table,)
         else:
-            mode, table, length, pointer, source, fo = params
+            _m, source, table, length, pointer, _fo = params
+            tables = (source, table)
         enable = runs(state, mode, inputs[0])
         memory = ctx.memory
         if len(inputs) > 2 and inputs[2]:
             memory.write(pointer, 0, 2)
-            return _outputs(ctx, state, fo, False, False)
+            return outputs(ctx, state, fo, False, False)
         if not enable:
             return bool(state.get("fo0", False))
         size = width(mode)
         count = operand_value(memory, length, 2)
         at = memory.read(pointer, 2, signed=True)
-        if not (_fits(ctx, table, count, size) and 0 <= at < count):
-            return _outputs(ctx, state, fo, False, True)
+        if not (all(fits(ctx, t, count, size) for t in tables) and 0 <= at < count):
+            return outputs(ctx, state, fo, False, True)
         assert isinstance(table, Address)
         entry = table.offset(at * size)
-        if to_table:
+        if kind == "R->T":
             memory.write(entry, operand_value(memory, source, size), size)
-        else:
+        elif kind == "T->R":
             memory.write(source, memory.read(entry, size), size)
+        else:
+            memory.write(entry, memory.read(source.offset(at * size), size), size)
         if len(inputs) > 1 and inputs[1] and at < count - 1:
             memory.write(pointer, at + 1, 2)
-        return _outputs(ctx, state, fo, at == count - 1, False)
+        return outputs(ctx, state, fo, at == count - 1, False)
 
     return impl
 
 
-def _outputs(ctx: FunctionContext, state: dict, fo: object, *bits: bool) -> bool:
-    write_outputs(ctx.memory, fo, *bits)
-    state["fo0"] = bits[0]
-    return bits[0]
-
-
-function("FBS.R_T")(_pointer_move(True))
-function("FBS.T_R")(_pointer_move(False))
+function("FBS.R_T")(_pointer_move("R->T"))
+function("FBS.T_R")(_pointer_move("T->R"))
+function("FBS.T_T")(_pointer_move("T->T"))

@@ -98,10 +98,11 @@ function("FBS.ABS")(_unary(False))
 @function("FBS.EXT")
 def fatek_extend(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                  params: tuple) -> bool:
-    """FUN 29 EXT: the 16-bit S sign-extended into the 32-bit D (D and the register after)."""
-    mode, source, destination = params
+    """FUN 29 EXT: the 16-bit D sign-extended into the 32-bit D + 1, D (FBs manual p. 7-8);
+    the D form does the same [chosen]."""
+    mode, destination = params
     if runs(state, mode, inputs[0]):
-        ctx.memory.write(destination, operand_value(ctx.memory, source, 2), 4)
+        ctx.memory.write(destination, ctx.memory.read(destination, 2, signed=True), 4)
     return False
 
 
@@ -123,7 +124,8 @@ def _moved(value: int, count: int, bits: int, left: bool, rotate: bool, fill: bo
 
 def _mover(left: bool, rotate: bool) -> FunctionImpl:
     """FUN 51 SHFL / 52 SHFR (the INB input shifted in) and 53 ROTL / 54 ROTR: D moved N
-    bits; FO0 OTB the last bit moved out."""
+    bits; FO0 OTB the last bit moved out; N outside 1-16 (1-32 in the D form): FO1 ERR and
+    nothing done (FBs manual pp. 7-26, 7-29)."""
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
@@ -134,13 +136,13 @@ def _mover(left: bool, rotate: bool) -> FunctionImpl:
         size = width(mode)
         bits = 8 * size
         n = operand_value(ctx.memory, count, 2)
-        if not 0 <= n <= bits:
-            return _held(state)  # N out of 0..16 (32): the box does nothing [LW]
+        if not 1 <= n <= bits:
+            return _out(ctx, state, fo, False, True)
         fill = not rotate and len(inputs) > 1 and bool(inputs[1])
         value = ctx.memory.read(destination, size, signed=False)
         value, out = _moved(value, n, bits, left, rotate, fill)
         ctx.memory.write(destination, signed(value, size), size)
-        return _out(ctx, state, fo, out)
+        return _out(ctx, state, fo, out, False)
 
     return impl
 

@@ -98,3 +98,23 @@ def test_nibble_and_byte_moves(monitored: bool) -> None:
     put(engine, "R0", 0)
     scan(engine)
     assert get(engine, "R2") == 0x5C34
+
+
+@MODES
+def test_dist_as_the_manuals_example_and_unit_back(monitored: bool) -> None:
+    """FBs manual p. 7-23: WX0 = 0x0421, N 3 into R0-R2 = 1, 2, 4; UNIT puts them together
+    again; N outside 1-4 is ERR, nothing written."""
+    engine = plc("ORG X0\nFUN 48P DIST\n S : R10\n N : 3\n D : R0\nFO 0\nOUT Y0\n"
+                 "ORG X1\nFUN 47P UNIT\n S : R0\n N : R11\n D : R12\nFO 0\nOUT Y1\n",
+                 monitored)
+    put(engine, "R10", 0x7421)
+    put(engine, "R2", 0x7F0)
+    put(engine, "R11", 3)
+    scan(engine, X0=1)
+    assert [get(engine, f"R{k}") for k in range(4)] == [1, 2, 4, 0] and get(engine, "Y0") == 0
+    scan(engine, X1=1)
+    assert (get(engine, "R12"), get(engine, "Y1")) == (0x421, 0)
+    put(engine, "R11", 5)
+    scan(engine, X1=0)
+    scan(engine, X1=1)
+    assert (get(engine, "R12"), get(engine, "Y1")) == (0x421, 1)

@@ -131,9 +131,10 @@ def test_a_pin_carries_its_bit_in_the_power_flow() -> None:
         assert [flow.node(row, 10) for row in (1, 2)] == list(values)
 
 
-def test_a_pin_followed_by_logic_stays_a_rung_of_its_own() -> None:
+def test_a_pin_followed_by_a_contact_is_drawn_on_its_box() -> None:
     program = fatek("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 1\nAND X3\nOUT Y1\n")
-    assert len(program.networks) == 2  # FO 1 AND X3 is logic: drawn on its own as before
+    assert len(program.networks) == 1  # was a rung of its own (`FO17` contact) before
+    assert layout_network(program.networks[0].instructions).listing is None
 
 
 def test_the_pins_feed_their_coils_no_break_is_marked() -> None:
@@ -141,3 +142,99 @@ def test_the_pins_feed_their_coils_no_break_is_marked() -> None:
     from ladderworks.core.ladder.open_circuit import open_ends
 
     assert open_ends(layout_network(fatek(CMP).networks[0].instructions)) == []
+
+
+# `FO n` followed by logic: the pin, then the contacts in series after it, then its coils
+LOGIC = ("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 0\nOUT Y0\nFO 1\nAND X3\nAND NOT X4\n"
+         "OUT Y1\nFO 2\nOUT Y2\n")
+
+
+def test_fo_followed_by_contacts_is_the_pin_then_the_contacts_in_one_network() -> None:
+    program = fatek(LOGIC)
+    assert len(program.networks) == 1
+    net = layout_network(program.networks[0].instructions)
+    assert net.listing is None
+    box = next(e for e in net.cells.values() if isinstance(e, FunctionBox))
+    box_cell = next(c for c, e in net.cells.items() if e is box)
+    assert [offset for offset, _ in box.outputs] == [1, 2]
+    row = box_cell[0] + 1
+    after = [net.cells[(row, c)] for c in range(box_cell[1] + box.width, net.coil_column)]
+    assert [str(e.address) for e in after if hasattr(e, "address")] == ["X0.3", "X0.4"]
+    art = "\n".join(draw_network(net, spell=spelling()))
+    assert "FO1" in art and "|/|" in art
+    again = _round_trip(program)
+    assert again.networks[0].instructions == program.networks[0].instructions
+    assert encode_program(program) == LOGIC.encode()
+
+
+def test_fo_with_logic_runs_as_before_on_every_input() -> None:
+    """The network read and the one coded from its drawing run as CMP's FO give them."""
+    program = fatek(LOGIC)
+    redrawn = _round_trip(fatek(LOGIC))
+    for values in itertools.product((0, 1), repeat=4):
+        seen = []
+        for source in (program, redrawn):
+            plc = ScanEngine(compile(source), period_ms=10)
+            for name, value in zip(("X0", "X3", "X4", "R0"), values, strict=True):
+                put(plc, name, value)
+            put(plc, "R1", 1)
+            plc.scan()
+            seen.append([get(plc, y) for y in ("Y0", "Y1", "Y2")])
+        x0, x3, x4, r0 = values
+        assert seen[0] == seen[1] == [x0 & (r0 == 1), x0 & (r0 > 1) & x3 & (1 - x4),
+                                      x0 & (r0 < 1)]
+
+
+def test_logic_or_ed_with_a_pin_stays_a_rung_of_its_own() -> None:
+    program = fatek("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 1\nOR X3\nOUT Y1\n")
+    assert len(program.networks) == 2
+    for network in program.networks:
+        assert layout_network(network.instructions).listing is None
+
+
+def test_pins_chosen_in_the_editor_are_coded_with_their_coils() -> None:
+    """A box with only W1 gets FO2 and FO1 shown (each on a row of its own); the coils drawn
+    on them code as `RD FO.n` and the coil; FO2 taken away again keeps FO1 on its row."""
+    from ladderworks.core.ladder.edits import EditRefused
+    from ladderworks.core.ladder.output_pins import set_output_pins, shown_pins
+
+    program = fatek("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 0\nOUT Y0\n")
+    net = layout_network(program.networks[0].instructions)
+    (row, col), box = next((c, e) for c, e in net.cells.items() if isinstance(e, FunctionBox))
+    set_output_pins(net, row, col + 1, (2, 1, 9))  # any cell of the box; 9 is no FO bit
+    box = net.cells[(row, col)]
+    assert isinstance(box, FunctionBox) and shown_pins(box) == (1, 2) and box.height == 3
+    coils = {1: "Y1", 2: "Y2"}
+    for offset, _contact in box.outputs:
+        for c in range(col + box.width, net.coil_column):
+            net.cells[(row + offset, c)] = WIRE
+        net.cells[(row + offset, net.coil_column)] = Coil(
+            parse_bytes(f"ORG X0\nOUT {coils[offset]}\n".encode(), "fatek").program
+            .networks[0].instructions[1].operand)
+    code, problems = network_to_instructions(net, 0, "fatek")
+    assert code is not None, problems
+    assert [(ins.name, str(ins.operand)) for ins in code[-4:]] == [
+        ("RD", "R2700.1"), ("WRT", "Y0.1"), ("RD", "R2700.2"), ("WRT", "Y0.2")]
+    set_output_pins(net, row, col, (1,))
+    box = net.cells[(row, col)]
+    assert isinstance(box, FunctionBox) and [o for o, _ in box.outputs] == [1]
+    try:
+        set_output_pins(net, row, net.coil_column, (1,))
+    except EditRefused as refused:
+        assert refused.diagnostic.code == "edit-no-pins"
+    else:
+        raise AssertionError("a coil has no pins")
+
+
+def test_every_mix_of_pins_and_their_contacts_codes_back_the_same() -> None:
+    """FO1 / FO2 each with 0-2 contacts (NO or NC) before its coil: drawn, coded back equal."""
+    shapes = itertools.product((0, 1, 2), (0, 1, 2), (False, True))
+    for first, second, negated in shapes:
+        contacts = ["AND NOT X4" if negated else "AND X4", "AND X5"]
+        text = ("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 0\nOUT Y0\nFO 1\n"
+                + "".join(f"{c}\n" for c in contacts[:first]) + "OUT Y1\nFO 2\n"
+                + "".join(f"{c}\n" for c in contacts[:second]) + "OUT Y2\nOUT Y3\n")
+        program = fatek(text)
+        assert len(program.networks) == 1, text
+        assert _round_trip(program).networks[0].instructions == \
+            program.networks[0].instructions, text

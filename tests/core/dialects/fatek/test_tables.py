@@ -92,3 +92,14 @@ def test_pointer_moves_register_to_table_and_back(monitored: bool) -> None:
     put(engine, "R22", 0)
     scan(engine, X3=1)
     assert (get(engine, "R22"), get(engine, "Y3")) == (0, 1)
+
+
+@MODES
+def test_a_table_of_one_entry_is_an_error_for_the_table_instructions(monitored: bool) -> None:
+    """FBs manual p. 7-83: a table consists of 2 or more registers (SUM and MEAN take 1)."""
+    engine = plc("ORG X0\nFUN 103 BT_M\n Ts : R0\n Td : R10\n L : 1\nFO 0\nOUT Y0\n"
+                 "ORG X0\nFUN 24 SUM\n Ts : R0\n L : 1\n D : R20\nFO 0\nOUT Y1\n", monitored)
+    put(engine, "R0", 5)
+    scan(engine, X0=1)
+    assert (get(engine, "Y0"), get(engine, "R10")) == (1, 0)
+    assert (get(engine, "Y1"), get(engine, "R20")) == (0, 5)

@@ -54,12 +54,13 @@ def test_sqrt_neg_abs_ext(monitored: bool) -> None:
     engine = plc("ORG X0\nFUN 26 SQRT\n S : R0\n D : R10\nFO 0\nOUT Y0\n"
                  "ORG X1\nFUN 27P NEG\n D : R11\n"
                  "ORG X1\nFUN 28P ABS\n D : R12\n"
-                 "ORG X1\nFUN 29 EXT\n S : R13\n D : R20\n"
+                 "ORG X1\nFUN 29 EXT\n D : R20\n"
                  "ORG X1\nFUN 26D SQRT\n S : R30\n D : R32\n", monitored)
     put(engine, "R0", 99)
     put(engine, "R11", 5)
     put(engine, "R12", -7)
-    put(engine, "R13", -2)
+    put(engine, "R20", -2)
+    put(engine, "R21", 0x1234)  # ignored: D + 1 takes the sign
     put(engine, "R31", 16)  # R30-R31 = 16 * 65536 = 1048576 = 1024 ** 2
     scan(engine, X0=1, X1=1)
     assert (get(engine, "R10"), get(engine, "Y0")) == (9, 0)
@@ -108,6 +109,44 @@ def test_rotations(monitored: bool) -> None:
     scan(engine, X0=1)
     assert get(engine, "R0") & 0xFFFF == 0x3412
     assert (get(engine, "R2"), get(engine, "R3") & 0xFFFF) == (0, 0x8000)
+
+
+@MODES
+def test_shfl_and_rotr_as_the_manuals_examples_and_n_out_of_range(monitored: bool) -> None:
+    """FBs manual p. 7-26: R0 0x32F0 shifted left 4 with INB 1 is 0x2F0F, OTB 1; p. 7-29:
+    0xF0AA rotated right 8 is 0xAAF0, OTB 1. N outside 1-16 sets ERR (FO1), nothing moved."""
+    engine = plc("ORG X0\nLD X1\nFUN 51P SHFL\n D : R0\n N : R9\nFO 0\nOUT Y0\nFO 1\nOUT Y1\n"
+                 "ORG X0\nFUN 54P ROTR\n D : R2\n N : 8\nFO 0\nOUT Y2\nFO 1\nOUT Y3\n",
+                 monitored)
+    put(engine, "R0", 0x32F0)
+    put(engine, "R2", 0xF0AA - 0x10000)
+    put(engine, "R9", 4)
+    scan(engine, X0=1, X1=1)
+    assert get(engine, "R0") & 0xFFFF == 0x2F0F and (get(engine, "Y0"), get(engine, "Y1")) == (1, 0)
+    assert get(engine, "R2") & 0xFFFF == 0xAAF0 and (get(engine, "Y2"), get(engine, "Y3")) == (1, 0)
+    for n in (0, 17):
+        put(engine, "R9", n)
+        scan(engine, X0=0)
+        scan(engine, X0=1)
+        assert get(engine, "R0") & 0xFFFF == 0x2F0F
+        assert (get(engine, "Y0"), get(engine, "Y1")) == (0, 1)
+
+
+@MODES
+def test_ext_as_the_manuals_example(monitored: bool) -> None:
+    """FBs manual p. 7-8: EXT's one operand D; R0 = CFC7H (-12345) becomes R1R0 = FFFFCFC7H
+    whatever R1 held, and 33FFH becomes 000033FFH."""
+    engine = plc("ORG X0\nFUN 29P EXT\n D : R0\n", monitored)
+    put(engine, "R0", 0xCFC7 - 0x10000)
+    put(engine, "R1", 0x0ABC)
+    scan(engine, X0=1)
+    assert (get(engine, "R0"), get(engine, "R1")) == (-12345, -1)
+    put(engine, "R0", 0x33FF)
+    scan(engine)  # the P form: not again while EN stays 1
+    assert get(engine, "R1") == -1
+    scan(engine, X0=0)
+    scan(engine, X0=1)
+    assert (get(engine, "R0"), get(engine, "R1")) == (0x33FF, 0)
 
 
 @MODES

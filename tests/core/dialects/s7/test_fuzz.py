@@ -1,5 +1,6 @@
 """Property tests: an SD text, however cut or garbled, gives a program or diagnostics at lines,
-never an exception; a program that reads compiles and runs."""
+never an exception; a program that reads compiles and runs; it draws (or keeps its listing)
+and its drawing reads back, never an exception."""
 
 from __future__ import annotations
 
@@ -10,6 +11,8 @@ from hypothesis import strategies as st
 
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.il.reading import parse_bytes
+from ladderworks.core.ladder.art import draw_document
+from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.plc.engine import ScanEngine
 from tests.hypothesis_profiles import examples
 
@@ -28,6 +31,11 @@ def _check(text: str) -> None:
     lines = text.count("\n") + 1
     for diagnostic in result.diagnostics:
         assert 0 <= diagnostic.line <= lines and diagnostic.message()
+    doc = program_to_ladder(result.program)  # drawn as TIA draws it, or kept as a listing
+    draw_document(doc)
+    for network in doc.networks:  # read back from the grid and lowered again
+        network.comments = [*network.comments, "changed"]
+    ladder_to_program(doc)
     if result.ok:
         compiled = compile_program(result.program)
         if compiled.binary is not None:

@@ -178,3 +178,18 @@ def test_an_unknown_encoding_or_stray_bytes_are_malformed_not_a_crash() -> None:
     found = read_document('<?xml version="1.0" encoding="tf-8"?><Document />')
     assert [d.code for d in found.diagnostics] == ["s7xml-malformed"]
     assert read_document("\udcff<Document />").diagnostics[0].code == "s7xml-malformed"
+
+
+def test_a_loop_or_a_long_series_is_kept_as_a_listing_in_the_drawing() -> None:
+    from ladderworks.core.ladder.convert import program_to_ladder
+
+    loop = (wire(30, "23:out", "24:in") + wire(31, "24:out", "23:in") +
+            wire(32, "21", "23:operand") + wire(33, "22", "24:operand"))
+    count = MAX_PARTS - 2
+    parts = "".join(f'<Part Name="Contact" UId="{n}" />' for n in range(100, 100 + count))
+    series = wire(30, "rail", "100:in") + "".join(
+        wire(1000 + n, f"{n}:out", f"{n + 1}:in") for n in range(100, 99 + count)) + "".join(
+        wire(5000 + n, "21", f"{n}:operand") for n in range(100, 100 + count))
+    result = parse_bytes(document([_net(loop), _net(series, parts)]).encode())
+    drawn = program_to_ladder(result.program).networks
+    assert len(drawn) == 2 and all(n.listing is not None for n in drawn)
