@@ -42,6 +42,7 @@ class Tried:
     crashed: str = ""
     networks: int = 0
     lowered: int = 0
+    drawn: int = 0
     text: int = 0
     empty: int = 0
     failed: int = 0
@@ -51,6 +52,16 @@ class Tried:
 def _network_of(diagnostic: Diagnostic) -> int:
     found = diagnostic.args.get("network")
     return found if isinstance(found, int) else 0
+
+
+def _drawn(program: object) -> int:
+    """How many networks of the entry block draw as LAD (not kept as a listing); 0 where the
+    code has no drawing of S7 networks (before s7draw)."""
+    model = getattr(program, "model", None)
+    draw = getattr(model, "draw", None)
+    if draw is None:
+        return 0
+    return sum(1 for net in draw() if not net.listing and net.cells)
 
 
 def try_one(path: Path) -> Tried:
@@ -69,6 +80,11 @@ def try_one(path: Path) -> Tried:
     block = getattr(source, "block", None)
     if block is None:  # no code block (a DB or tag table alone): nothing to lower
         return tried
+    try:
+        tried.drawn = _drawn(program)
+    except Exception as error:  # noqa: BLE001 - a crash of the drawing is counted too
+        tried.crashed = f"drawing: {type(error).__name__}: {error}"
+        traceback.print_exc(limit=3, file=sys.stderr)
     failing = {_network_of(d) for d in diagnostics
                if d.code in LEFT_OUT or (d.severity is Severity.ERROR and d.code not in FATAL)}
     for index, network in enumerate(block.networks, start=1):
@@ -103,7 +119,7 @@ def main(argv: list[str] | None = None) -> int:
         count += 1
         opened += tried.opened
         crashed += bool(tried.crashed)
-        for name in ("networks", "lowered", "text", "empty", "failed"):
+        for name in ("networks", "lowered", "drawn", "text", "empty", "failed"):
             setattr(total, name, getattr(total, name) + getattr(tried, name))
         total.codes.update(tried.codes)
         if not args.quiet:
@@ -112,11 +128,12 @@ def main(argv: list[str] | None = None) -> int:
             codes = ", ".join(f"{c}×{n}" for c, n in sorted(tried.codes.items()))
             where = path.relative_to(args.folder) if path != args.folder else Path(".")
             print(f"{where}: {state}; networks {tried.networks} (lowered {tried.lowered}, "
-                  f"text {tried.text}, empty {tried.empty}, failed {tried.failed}); "
+                  f"drawn {tried.drawn}, text {tried.text}, empty {tried.empty}, "
+                  f"failed {tried.failed}); "
                   f"{codes or 'no diagnostics'}")
     print(f"TOTAL: {count} tried, {opened} opened, {crashed} crashed; networks "
-          f"{total.networks} (lowered {total.lowered}, text {total.text}, empty {total.empty},"
-          f" failed {total.failed})")
+          f"{total.networks} (lowered {total.lowered}, drawn {total.drawn}, text {total.text}, "
+          f"empty {total.empty}, failed {total.failed})")
     for code, number in sorted(total.codes.items()):
         print(f"  {code}: {number}")
     return 0
