@@ -82,7 +82,7 @@ def try_one(path: Path) -> Tried:
         return tried
     try:
         tried.drawn = _drawn(program)
-    except Exception as error:  # noqa: BLE001 - a crash of the drawing is counted too
+    except Exception as error:
         tried.crashed = f"drawing: {type(error).__name__}: {error}"
         traceback.print_exc(limit=3, file=sys.stderr)
     failing = {_network_of(d) for d in diagnostics
