@@ -84,6 +84,7 @@ class Part:
     label: str = ""
     dests: tuple[str, ...] = ()
     line: int = 0
+    disabled_eno: bool = False  # SimaticML's DisabledENO: the box's ENO is its EN
 
 
 @dataclass(frozen=True, slots=True)

@@ -308,7 +308,8 @@ class _Reader:
         if node.name == "Call":
             return self.call(node, uid)
         name = part_in(node.attrs.get("Name", ""))
-        part = Part(uid, name, line=node.line)
+        part = Part(uid, name, line=node.line,
+                    disabled_eno=node.attrs.get("DisabledENO", "").lower() == "true")
         if name not in PART_NAMES:
             self.warn("s7xml-part", node.line, uid=uid, part=name, **where)
         part.negated = frozenset(pin_in(name, n.attrs.get("Name", ""))

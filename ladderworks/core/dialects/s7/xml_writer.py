@@ -125,7 +125,8 @@ def _part(part: Part, uid: str, ids: dict[str, str], pad: str,
         kind = "Cardinality" if key == "Card" else "Type"
         inner.append(f"{pad}  <TemplateValue Name={quoteattr(key)} Type=\"{kind}\">"
                      f"{escape(value)}</TemplateValue>")
-    head = f"{pad}<Part Name={quoteattr(part_out(part.name))} UId=\"{uid}\""
+    head = f"{pad}<Part Name={quoteattr(part_out(part.name))} UId=\"{uid}\"" + (
+        ' DisabledENO="true"' if part.disabled_eno else "")
     return [head + " />"] if not inner else [head + ">", *inner, f"{pad}</Part>"]
 
 

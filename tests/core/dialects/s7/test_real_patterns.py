@@ -18,7 +18,7 @@ from ladderworks.core.dialects.s7.xml_reader import is_simaticml, read_document
 from ladderworks.core.dialects.s7.xml_writer import flgnet_lines
 from ladderworks.core.il.reading import parse_bytes, parse_file
 from ladderworks.core.plc.engine import ScanEngine
-from tests.core.dialects.s7.xml_docs import document, tag, wire
+from tests.core.dialects.s7.xml_docs import const, document, tag, wire
 
 DATA = Path(__file__).parent / "data" / "real_patterns.xml"
 
@@ -382,3 +382,32 @@ def test_an_access_of_a_scope_not_read_is_named_and_its_network_left_out() -> No
     assert found == [("s7xml-access", Severity.WARNING), ("s7-operand-unknown", Severity.WARNING)]
     assert "Indirect" in result.diagnostics[0].message()
     assert "<Indirect>" in result.diagnostics[1].message()
+
+
+def test_disabled_eno_keeps_eno_on_when_the_box_overflows() -> None:
+    """ADD 32767 + 1 into an Int overflows: its ENO is 0, unless the box's ENO is disabled
+    (`DisabledENO="true"`, as TIA writes boxes placed without ENO), when ENO is EN."""
+    def net(disabled: bool, coil: int) -> str:
+        flag = ' DisabledENO="true"' if disabled else ""
+        return ("<Parts>" + const(21, "32767", "Int") + const(22, "1", "Int") +
+                _abs(23, "Memory", 160).replace('Type="Bool"', 'Type="Int"') +
+                _abs(24, "Output", coil) +
+                f'<Part Name="Add" UId="30"{flag}><TemplateValue Name="SrcType" Type="Type">Int'
+                '</TemplateValue></Part><Part Name="Coil" UId="31" /></Parts><Wires>' +
+                wire(40, "rail", "30:en") + wire(41, "21", "30:in1") + wire(42, "22", "30:in2") +
+                wire(43, "30:out", "23") + wire(44, "30:eno", "31:in") +
+                wire(45, "24", "31:operand") + "</Wires>")
+
+    text = document([net(False, 0), net(True, 1)])
+    parts = read_document(text).blocks[0].networks[1].parts
+    assert [p.disabled_eno for p in parts] == [True, False]
+    assert 'DisabledENO="true"' in "\n".join(
+        flgnet_lines(read_document(text).blocks[0].networks[1]))
+    result = parse_bytes(text.encode("utf-8"))
+    assert result.diagnostics == []
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    engine.scan()
+    assert (engine.memory.bit(parse_absolute("%Q0.0")[0]),
+            engine.memory.bit(parse_absolute("%Q0.1")[0])) == (0, 1)
