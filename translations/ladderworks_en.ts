@@ -1572,111 +1572,121 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
+        <translation>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="515"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="520"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
         <translation>network {network}, row {row}, column {column}: the contact or coil has no operand</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
         <translation>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="543"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
+        <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
+        <translation>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>

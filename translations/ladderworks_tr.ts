@@ -1572,111 +1572,121 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
+        <translation>network {network}: {text} okunan etiket tablolarının hiçbirinde yok; LadderWorks ona kendi yerini veriyor ({type})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: &apos;{type}&apos; tipinde {part} benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="515"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: &apos;{text}&apos; için yer kalmadı (DB üyeleri ve örnekler 10000 baytı paylaşır)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>dosya {size} MB: {limit} MB üzerindeki S7 dışa aktarımları okunmaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="520"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
         <source>tag table: {why}</source>
         <translation>etiket tablosu: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
         <translation>network {network}, satır {row}, sütun {column}: kontağın ya da bobinin operandı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
         <translation>network {network}, satır {row}, sütun {column}: &apos;{name}&apos; bir S7 elemanı değil (S7 paletini kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>bu değişiklik S7 bloğunun dosyasına yazılamıyor: TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, satır {line}: {expected} bekleniyordu, &apos;{found}&apos; bulundu: kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, satır {line}: metin {what} içinde bitiyor (kesilmiş mi?): kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>S7 bloğunun dosyası artık okunamıyor (satır {line}): hiçbir şey yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; S7 bloğunun dosya biçiminde yazılamıyor: bu değişikliği TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="543"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
+        <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
+        <translation>{block}, network {network}: &apos;{scope}&apos; kapsamlı UId {uid} erişimi LadderWorks&apos;ün okuduğu hiçbir şeyi adlandırmıyor; ona bağlı parçalar benzetilmiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>

@@ -510,6 +510,9 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "network {network}: a {language} network is shown, not simulated"),
     "s7-call-unknown": QT_TRANSLATE_NOOP(
         "Diagnostic", "network {network}: the block '{block}' it calls is not in the program"),
+    "s7-tag-undeclared": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: {text} is in none of the tag tables read; "
+        "LadderWorks gives it a place of its own ({type})"),
     "s7-type": QT_TRANSLATE_NOOP(
         "Diagnostic", "network {network}: {part} on the type '{type}' is not simulated"),
     "s7-memory-full": QT_TRANSLATE_NOOP(
@@ -566,6 +569,9 @@ MESSAGES: dict[str, str] = {
     "s7xml-too-many": QT_TRANSLATE_NOOP(
         "Diagnostic", "{block}, network {network}: more than {limit} parts; the network is "
         "not read"),
+    "s7xml-access": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: access UId {uid} of scope '{scope}' names "
+        "nothing LadderWorks reads; the parts wired to it are not simulated"),
     "s7xml-call-missing": QT_TRANSLATE_NOOP(
         "Diagnostic", "{block}, network {network}: part UId {uid} calls '{callee}', which is "
         "not in the program"),

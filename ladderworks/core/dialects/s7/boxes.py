@@ -26,7 +26,7 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
         vtype = lowering.vtype(index, graph, part, ("operand", "inout", "in_out"))
         target = lowering.place(index, part, operand).address
         code = [Instruction("S7." + name.upper(), None, (int(vtype), target), line=line)]
-        return lowering.statement(part, [power], code, lowering.keep(graph, part))
+        return _result(lowering, graph, part, power, code)
     if name == "Move" and _to_string(lowering, graph, part):
         return _string_move(lowering, index, graph, part, power)
     if name == "Move":
@@ -37,11 +37,12 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
             if uid == part.uid and pin.startswith("out"):
                 for operand in targets:
                     code.append(Instruction("S7.MOVE", None, (
-                        int(vtype), source, lowering.place(index, part, operand).address),
+                        int(vtype), source,
+                        lowering.place(index, part, operand, guess=vtype.name).address),
                         line=line))
         if not code:
             raise lowering.fail(index, part, "s7-pin-missing", part=name, pin="OUT1")
-        return lowering.statement(part, [power], code, lowering.keep(graph, part))
+        return _result(lowering, graph, part, power, code)
     if name == "Convert":
         keys = {k.lower(): v for k, v in part.template.items()}
         source_type = typed.type_of(keys.get("intype", keys.get("srctype", ""))) or \
@@ -56,17 +57,24 @@ def box(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                             "in")
         code = [Instruction("S7.CONVERT", None, (int(source_type), int(target_type), source,
                                                  place.address), line=line)]
-        return lowering.statement(part, [power], code, lowering.keep(graph, part))
+        return _result(lowering, graph, part, power, code)
     vtype = lowering.vtype(index, graph, part, ("in1", "in2", "out"))
+    kinds = _declared(lowering, graph, part, ("in1", "in2", "out"))
+    if not any(key.lower() == "srctype" for key in part.template) and len(kinds) > 1:
+        # an automatically typed box on operands of several types: TIA converts them to
+        # one type; LadderWorks does not, so the box is not simulated [LW]
+        raise lowering.fail(index, part, "s7-type", part=part.name,
+                            type=" / ".join(sorted(k.name.title() for k in kinds)))
     first = lowering.value(index, part, graph.operand_in.get((part.uid, "in1")), vtype, "in1")
     second = lowering.value(index, part, graph.operand_in.get((part.uid, "in2")), vtype, "in2")
     outs = graph.operand_out.get((part.uid, "out"), [])
     if not outs:
         raise lowering.fail(index, part, "s7-pin-missing", part=name, pin="OUT")
     code = [Instruction(MATH[name], None, (int(vtype), first, second,
-                                           lowering.place(index, part, outs[0]).address),
+                                           lowering.place(index, part, outs[0],
+                                                          guess=vtype.name).address),
                         line=line)]
-    return lowering.statement(part, [power], code, lowering.keep(graph, part))
+    return _result(lowering, graph, part, power, code)
 
 def _outputs(graph: PinGraph, part: Part) -> list[Operand]:
     return [operand for (uid, pin), targets in graph.operand_out.items()
@@ -97,7 +105,7 @@ def _string_move(lowering: BlockLowering, index: int, graph: PinGraph, part: Par
         place = lowering.place(index, part, operand)
         code += [Instruction(i.name, None, i.params, line=part.line)
                  for i in string_moves(place, chars)[1:]]  # the max length stays
-    return lowering.statement(part, [power], code, lowering.keep(graph, part))
+    return _result(lowering, graph, part, power, code)
 
 
 def jump_table(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
@@ -132,3 +140,30 @@ def jump_table(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
             raise lowering.fail(index, part, "s7-label-unknown", label=otherwise)
         lowering.emit([Instruction("RD", keep, line=line),
                    Instruction("S7.JMP", None, (LabelRef(target),), line=line)])
+
+
+def _declared(lowering: BlockLowering, graph: PinGraph, part: Part, pins: tuple[str, ...]
+              ) -> set[typed.ValueType]:
+    """The declared types of the tags and members wired to a box's pins."""
+    found: set[typed.ValueType] = set()
+    for pin in pins:
+        operand = graph.operand_in.get((part.uid, pin)) or next(
+            iter(graph.operand_out.get((part.uid, pin), [])), None)
+        if operand is None or operand.kind not in (OperandKind.GLOBAL, OperandKind.LOCAL):
+            continue
+        place = lowering.layout.resolve(lowering.block, operand, "", lowering.scope)
+        if place is not None and place.vtype is not None:
+            found.add(place.vtype)
+    return found
+
+
+def _result(lowering: BlockLowering, graph: PinGraph, part: Part, power: Expr,
+            code: list[Instruction]) -> Expr | None:
+    """A box's code run on its EN; its ENO kept for what reads it: the box's result, or its EN
+    when the box's ENO is disabled (`DisabledENO`: errors are not reported)."""
+    keep = lowering.keep(graph, part)
+    if not part.disabled_eno or keep is None:
+        return lowering.statement(part, [power], code, keep)
+    lowering.statement(part, [power], [], keep)
+    lowering.statement(part, [power], code, None)
+    return ("bit", keep, False)

@@ -66,7 +66,7 @@ def _copy_out(lowering: BlockLowering, index: int, part: Part, source: Place,
               operand: Operand) -> None:
     """A parameter out to its actual."""
     line = part.line
-    target = lowering.place(index, part, operand)
+    target = lowering.place(index, part, operand, guess=source.type_name)
     if source.address.bit is not None or target.address.bit is not None:
         if source.address.bit is None or target.address.bit is None:
             raise _fail(lowering, index, part, "s7-type", part=part.call, type=source.type_name)
@@ -83,8 +83,8 @@ def lower_call(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                outputs: dict[str, Expr | None]) -> Expr | None:
     """A call: EN kept, parameters in, the callee's networks, parameters out."""
     found = callee_of(lowering, part)
-    if found is None:
-        raise _fail(lowering, index, part, "s7-call-unknown", block=part.call)
+    if found is None:  # not exported with the program (a library block …): shown only
+        return lowering.shown_only(index, part, power, "s7-call-unknown", block=part.call)
     callee, scope = found
     if lowering.depth >= MAX_DEPTH or callee is lowering.block:
         raise _fail(lowering, index, part, "s7-wire", part=callee.name,

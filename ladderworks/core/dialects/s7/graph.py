@@ -52,8 +52,8 @@ class Operand:
 
     def display(self) -> str:
         """The operand as TIA writes it: "Start", #Timer.Q, %I0.0, T#10s."""
-        if self.kind is OperandKind.CONSTANT:
-            return self.text
+        if self.kind is OperandKind.CONSTANT or (not self.path and self.text):
+            return self.text  # a constant; an access the reader could not name: its scope
         if self.kind is OperandKind.ABSOLUTE:
             return self.path[0] if self.path else self.text
         if self.kind is OperandKind.LOCAL:
@@ -84,6 +84,7 @@ class Part:
     label: str = ""
     dests: tuple[str, ...] = ()
     line: int = 0
+    disabled_eno: bool = False  # SimaticML's DisabledENO: the box's ENO is its EN
 
 
 @dataclass(frozen=True, slots=True)
@@ -190,13 +191,15 @@ class Block:
 
 @dataclass(frozen=True, slots=True)
 class Tag:
-    """One PLC tag: name, data type, logical address (%I0.0, %MW2; "" if none), comment."""
+    """One PLC tag: name, data type, logical address (%I0.0, %MW2; "" if none), comment; a
+    user constant of a tag table (`SW.Tags.PlcUserConstant`) has its `value` instead."""
 
     name: str
     type_name: str
     address: str = ""
     comment: str = ""
     table: str = ""
+    value: str = ""
 
 
 @dataclass(slots=True)

@@ -312,20 +312,39 @@ class Layout:
               scope: tuple[str, ...] = ()) -> Place | None:
         """A `#member[.sub…]` of `block`'s interface, in `scope` (an FB instance's: its
         instance DB `("motor_db",)`; by default the block's own `("#name",)`)."""
-        found = block.member(path[0])
+        stem, bracket, index = path[0].partition("[")  # `#Flags[3]`: an element of a member
+        found = block.member(stem)
         if found is None:
             return None
         scope = scope or (f"#{block.name.lower()}",)
         if scope not in self.places:  # the instance itself: named, its members under it
             self.places[scope] = Place(Address(Area.D, self.next_byte), "Struct")
-        key = (*scope, path[0].lower())
+        key = (*scope, stem.lower())
         if self._lay(key, found[1]) is None:
             return None
-        return self.sub(key, path[1:])
+        if not bracket:
+            return self.sub(key, path[1:])
+        place: Place | None = self.places[key]
+        member = self.members.get(key)
+        for each in index.rstrip("]").split("]["):
+            if member is None or place is None:
+                return None
+            place = element(place, each, self.element_size(member))
+            member = self.element_member(member)
+        for name in path[1:]:  # a member of a struct element, by its offset
+            pair = self.member_at(place, member, name.lower()) \
+                if place is not None and member is not None else None
+            if pair is None:
+                return None
+            place, member = pair
+        return place
 
     def global_name(self, path: tuple[str, ...], as_instance: str = "") -> Place | None:
         """A tag (`"Start"`), a global DB member (`"DB".a.b`), or an instance named by use."""
         tag = self.program.tag(path[0]) if len(path) == 1 else None
+        if tag is None and len(path) > 1 and self.program.block(path[0]) is None:
+            tag = self.program.tag(".".join(path))  # a member of a DB not read, as one name
+            path = (tag.name,) if tag is not None else path
         if tag is not None and tag.address:
             try:
                 address, _width = parse_absolute(tag.address)

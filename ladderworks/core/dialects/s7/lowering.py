@@ -10,12 +10,18 @@ they read. A part the lowering cannot map gives a diagnostic at its network and 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
-from ladderworks.core.dialects.s7 import boxes, calls
-from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part, S7Network
+from ladderworks.core.dialects.s7 import boxes, calls, system_tags
+from ladderworks.core.dialects.s7.graph import (
+    Block,
+    Operand,
+    OperandKind,
+    Part,
+    S7Network,
+)
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
 from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinGraph, emit_expr
 from ladderworks.core.dialects.s7.starts import lreal_constant, start_values
@@ -42,8 +48,6 @@ class LoweringError(Exception):
         self.diagnostic = diagnostic
 
 
-
-
 @dataclass(slots=True)
 class Counters:
     """What every block lowered into one program shares: label numbers and relays used."""
@@ -67,6 +71,7 @@ class BlockLowering:
     counters: Counters = field(default_factory=Counters)
     scope: tuple[str, ...] = ()
     depth: int = 0
+    shown: set[str] = field(default_factory=set)  # parts shown, not simulated (shown_only)
     # what the drawing maps back (drawing.py): each S7 network's engine networks, and each
     # part's result and the instructions it was lowered to, by (network index, part uid)
     spans: list[range] = field(default_factory=list)
@@ -108,9 +113,9 @@ class BlockLowering:
             before = len(self.networks)
             try:
                 self.network(index, network)
-            except LoweringError as error:
+            except LoweringError as error:  # left out, the others run: a warning [LW]
                 del self.networks[before:]
-                self.diagnostics.append(error.diagnostic)
+                self.diagnostics.append(replace(error.diagnostic, severity=Severity.WARNING))
             if len(self.networks) > before:
                 title = network.title or f"Network {index}"
                 self.networks[before].comments = [title, *network.comment.splitlines()]
@@ -134,6 +139,7 @@ class BlockLowering:
             return
         graph = PinGraph(network)
         graph.index = index
+        self.shown = set()  # UIds are a network's own
         if graph.missing:
             uid = graph.missing[0]
             raise self.fail(index, None, "s7-wire", part=uid, why="a wire to a part that is not "
@@ -152,6 +158,14 @@ class BlockLowering:
             self.emitted[(index, part.uid)] = (outputs[part.uid], tuple(
                 ins for net in self.networks[before:] for ins in net.instructions))
 
+    def shown_only(self, index: int, where: Part, power: Expr, code: str, **args: object
+                   ) -> Expr:
+        """A part not simulated, kept (a warning): ENO follows EN, nothing else is done [LW]."""
+        self.shown.add(where.uid)
+        self.diagnostics.append(Diagnostic(code, {"network": index, "uid": where.uid, **args},
+                                           where.line, 1, Severity.WARNING))
+        return power
+
     def emit(self, instructions: list[Instruction]) -> None:
         self.networks.append(Network(instructions))
 
@@ -163,6 +177,8 @@ class BlockLowering:
         for end in sources:
             if end.powerrail:
                 terms.append(("on",))
+            elif end.part in self.shown and end.pin not in ("out", "eno"):
+                continue  # a shown-only part's other outputs give no power
             else:
                 found = outputs.get(end.part)
                 other = graph.parts.get(end.part)
@@ -184,16 +200,23 @@ class BlockLowering:
         return ("bit", ALWAYS_OFF, False)
 
     def bit_expr(self, operand: Operand, negated: bool, index: int, part: Part) -> Expr:
+        operand = system_tags.constant_of(self.layout.program, operand) or operand
         if operand.kind is OperandKind.CONSTANT:
             on = operand.text.upper() in ("TRUE", "1")
             return ("bit", ALWAYS_ON if on != negated else ALWAYS_OFF, False)
-        place = self.place(index, part, operand)
+        place = self.place(index, part, operand, guess="Bool")
         if place.address.bit is None:
             raise self.fail(index, part, "s7-type", part=part.name, type=place.type_name)
         return ("bit", place.address, negated)
 
-    def place(self, index: int, part: Part, operand: Operand, instance: str = "") -> Place:
+    def place(self, index: int, part: Part, operand: Operand, instance: str = "",
+              guess: str = "") -> Place:
         found = self.layout.resolve(self.block, operand, instance, self.scope)
+        undeclared = None if found else system_tags.declare(self.layout.program, operand, guess,
+                                                             index, part)
+        if undeclared is not None:  # a tag of a table, or a member of a DB, not exported [LW]
+            self.diagnostics.append(undeclared)
+            found = self.layout.resolve(self.block, operand, instance, self.scope)
         if found is None and self.layout.full:
             raise self.fail(index, part, "s7-memory-full", text=operand.display())
         if found is None:
@@ -287,7 +310,7 @@ class BlockLowering:
             return None
         if name == "Call":
             return calls.lower_call(self, index, graph, part, power, outputs)
-        raise self.fail(index, part, "s7-part-unknown", part=name)
+        return self.shown_only(index, part, power, "s7-part-unknown", part=name)
 
     def gate(self, graph: PinGraph, part: Part, outputs: dict[str, Expr | None]) -> Expr | None:
         """O (OR), A (AND), X (XOR of two) of the inputs in1 … inN, a negated pin inverted; an
@@ -312,6 +335,7 @@ class BlockLowering:
               pin: str) -> ParamValue:
         if operand is None:
             raise self.fail(index, part, "s7-pin-missing", part=part.name, pin=pin.upper())
+        operand = system_tags.constant_of(self.layout.program, operand) or operand
         if operand.kind is OperandKind.CONSTANT:
             found: ParamValue | None = constant_value(operand.text, vtype)
             if found is None and vtype is typed.ValueType.LREAL:
@@ -319,7 +343,7 @@ class BlockLowering:
             if found is None:
                 raise self.fail(index, part, "s7-operand-unknown", text=operand.text)
             return found
-        return self.place(index, part, operand).address
+        return self.place(index, part, operand, guess=vtype.name).address
 
     def vtype(self, index: int, graph: PinGraph, part: Part, pins: tuple[str, ...]
               ) -> typed.ValueType:

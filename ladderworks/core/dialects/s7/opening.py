@@ -15,7 +15,7 @@ from ladderworks.core.il.textform import TextForm
 def read(text: str, form: TextForm, lines: list[str],
          ends: list[str]) -> tuple[Program, list[Diagnostic]]:
     """One block's text: a SimaticML document or an SD block."""
-    if is_simaticml(text):
+    if is_simaticml(text) or text.lstrip().startswith("<SW."):
         return xml_open.read(text, form, lines, ends)
     return reader.read(text, form, lines, ends)
 

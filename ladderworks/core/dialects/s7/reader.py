@@ -13,6 +13,7 @@ from pathlib import Path
 
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.dialects.s7 import scl_source, system_tags
 from ladderworks.core.dialects.s7.graph import Block, S7Program
 from ladderworks.core.dialects.s7.layout import (
     COUNTER_MEMBERS,
@@ -22,7 +23,7 @@ from ladderworks.core.dialects.s7.layout import (
     Layout,
     size_of,
 )
-from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd, parse_sources
+from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
 from ladderworks.core.dialects.s7.source import program_of
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
@@ -32,7 +33,7 @@ from ladderworks.core.symbols import Symbol, SymbolTable
 
 NAME = "s7"
 SD_SUFFIXES = (".s7dcl",)
-SOURCE_SUFFIXES = (".db", ".udt")  # TIA's "Generate source from blocks": global DBs, types
+SOURCE_SUFFIXES = (".db", ".udt", ".scl")  # TIA's "Generate source from blocks"
 MAX_BYTES = 64 * 1024 * 1024  # a file larger than this is refused, not read
 
 
@@ -60,9 +61,14 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
         if block.kind == "GlobalDB":
             layout.global_name((block.name,))
     for tag in program.tags:
+        if tag.value:  # a user constant: no place, its value is used where it is named
+            continue
         place = layout.global_name((tag.name,))
         if place is not None:
-            add(f'"{tag.name}"', place.address, tag.comment)
+            head, dot, rest = tag.name.partition(".")  # a member of a DB not read: "DB".a
+            quoted = f'"{head}".{rest}' if dot and tag.table == system_tags.UNDECLARED \
+                else f'"{tag.name}"'
+            add(quoted, place.address, tag.comment)
             table.by_symbol.setdefault(tag.name, place.address)
             typed(f'"{tag.name}"', tag.type_name)
     for section in ("Input", "Output", "InOut", "Static", "Temp"):
@@ -113,7 +119,8 @@ def build(blocks: list[Parsed], tags: list, texts: dict[str, dict[str, str]],
     """The Program of the entry block among `blocks`, with the tags' symbols."""
     for parsed in blocks:
         _titles(parsed, texts)
-    program = S7Program([p.block for p in blocks], list(tags))
+    every = [p.block for p in blocks]
+    program = S7Program(every, list(tags) + system_tags.implied(every, list(tags)))
     layout = Layout(program)
     code = [b for b in program.blocks if b.kind in ("OB", "FC", "FB")]
     entry = code[0] if code else None  # the file opened, or a folder's OB (put first)
@@ -158,6 +165,19 @@ def _parse(text: str, diagnostics: list[Diagnostic]) -> Parsed | None:
         return None
 
 
+def _source_entry(text: str, diagnostics: list[Diagnostic]) -> tuple[Parsed | None,
+                                                                     list[Parsed]]:
+    """A source opened as the program: its first code block (else its first block) and the
+    others."""
+    try:
+        found = scl_source.parse_scl(text)
+    except ParseError as error:
+        diagnostics.append(error.diagnostic)
+        return None, []
+    first = next((p for p in found if p.block.kind in scl_source.CODE), found[0])
+    return first, [p for p in found if p is not first]
+
+
 def read(text: str, form: TextForm, lines: list[str],
          ends: list[str]) -> tuple[Program, list[Diagnostic]]:
     """One SD block's text (no companion files) as a Program and its diagnostics."""
@@ -188,7 +208,7 @@ def read_sources(path: Path, diagnostics: list[Diagnostic]) -> list[tuple[Path, 
     if text is None:
         return []
     try:
-        return [(path, parsed) for parsed in parse_sources(text)]
+        return [(path, parsed) for parsed in scl_source.parse_scl(text)]
     except ParseError as error:
         inner = error.diagnostic
         args: dict[str, object] = {"file": path.name, "line": inner.line}
@@ -240,7 +260,8 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     if entry is None:  # a folder: its OB, else its first code block, else its first file
         code = [p for p, b in found if b.block.kind in ("OB", "FC", "FB")]
         ob = next((p for p, b in found if b.block.kind == "OB"), None)
-        sd = sorted(p for p in folder.iterdir() if p.suffix.lower() in SD_SUFFIXES)
+        sd = sorted(p for p in folder.iterdir() if p.suffix.lower() in SD_SUFFIXES) or \
+            sorted(p for p, _b in found)  # else a folder of sources: DBs and types alone
         entry = ob or (code[0] if code else sd[0] if sd else None)
     blocks = [b for p, b in found if p != entry]
     if entry is None:
@@ -251,10 +272,15 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     raw = data if data is not None and path.is_file() else entry.read_bytes()
     text, form, problems, (lines, ends) = decode_lines(raw)
     diagnostics += problems
-    parsed = _parse(text, diagnostics)
+    if entry.suffix.lower() in SOURCE_SUFFIXES:  # a source: its first code block, the rest
+        parsed, more = _source_entry(text, diagnostics)  # of its blocks beside it
+        blocks += more
+    else:
+        parsed = _parse(text, diagnostics)
     program, graph, _layout = build(([parsed] if parsed else []) + blocks, tags, texts,
                                     diagnostics)
     _source(program, form, lines, ends)
-    if parsed is not None:
-        attach(program, graph, raw, "sd")
+    if parsed is not None:  # a changed source is refused on Save (no writer for "scl")
+        source = entry.suffix.lower() in SOURCE_SUFFIXES
+        attach(program, graph, raw, "scl" if source else "sd")
     return program, diagnostics, form.encoding

@@ -60,15 +60,18 @@ def read_tag_table(text: str) -> tuple[list[Tag], list[Diagnostic]]:
         return [], [problem] if problem is not None else []
     tags: list[Tag] = []
     table = ""
+    tables = 0
     for element in root.iter():
         name = _local(element.tag)
         if name == "SW.Tags.PlcTagTable":
             table = _text(element, "Name")
-        elif name == "SW.Tags.PlcTag":
+            tables += 1
+        elif name in ("SW.Tags.PlcTag", "SW.Tags.PlcUserConstant"):  # a constant: its Value
             attributes = next((c for c in element if _local(c.tag) == "AttributeList"), element)
             tags.append(Tag(_text(attributes, "Name"), _text(attributes, "DataTypeName"),
-                            _text(attributes, "LogicalAddress"), _comment(element), table))
-    if not tags:
+                            _text(attributes, "LogicalAddress"), _comment(element), table,
+                            _text(attributes, "Value")))
+    if not tags and not tables:  # an empty table (no tag yet) is read as empty
         return [], [Diagnostic("s7-tags", {"why": "no SW.Tags.PlcTag in it"}, 1, 1)]
     return tags, []
 

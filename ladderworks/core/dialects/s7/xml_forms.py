@@ -38,6 +38,21 @@ def namespace(uri: str) -> tuple[str, int] | None:
     return found.group("kind"), int(found.group("version") or 0)
 
 
+# SimaticML's names of LAD parts the graph names otherwise (P_TRIG/N_TRIG as LAD boxes)
+_PARTS_IN = {"PBox": "PTrig", "NBox": "NTrig"}
+_PARTS_OUT = {graph: xml for xml, graph in _PARTS_IN.items()}
+
+
+def part_in(name: str) -> str:
+    """A SimaticML `Part Name` as the graph names it."""
+    return _PARTS_IN.get(name, name)
+
+
+def part_out(name: str) -> str:
+    """A graph part name as SimaticML's LAD spells it."""
+    return _PARTS_OUT.get(name, name)
+
+
 def pin_in(part_name: str, pin: str) -> str:
     """A SimaticML pin name as the graph spells it."""
     low = pin.lower()

@@ -10,11 +10,12 @@ from __future__ import annotations
 from pathlib import Path
 
 from ladderworks.core.diagnostics import Diagnostic, Severity
-from ladderworks.core.dialects.s7 import reader
+from ladderworks.core.dialects.s7 import reader, vci
 from ladderworks.core.dialects.s7.graph import Block, S7Program, Tag
 from ladderworks.core.dialects.s7.sd_parser import Parsed
 from ladderworks.core.dialects.s7.texts import read_texts
 from ladderworks.core.dialects.s7.xml_reader import (
+    EXPORT_KINDS,
     XmlRead,
     check_calls,
     is_simaticml,
@@ -35,22 +36,23 @@ def _head(path: Path) -> str:
         return ""
 
 
-def _is_block_file(path: Path) -> bool:
+def _is_block_file(path: Path, kinds: tuple[str, ...] = ("SW.Blocks.",)) -> bool:
     if path.suffix.lower() != ".xml":
         return False
     head = _head(path)
-    return "<Document" in head and "SW.Blocks." in head
+    return "<Document" in head and any(kind in head for kind in kinds)
 
 
 def wants(path: Path, data: bytes | None) -> bool:
     """True when `path` is a SimaticML block document, or a folder whose blocks are XML only."""
-    if path.is_dir():
-        files = [p for p in path.iterdir() if p.is_file()]
+    if path.is_dir():  # a folder of exports, or a folder of a TIA VCI workspace (vci.py)
+        files = vci.files(path)
         return not any(p.suffix.lower() in reader.SD_SUFFIXES for p in files) and \
             any(_is_block_file(p) for p in files)
-    if data is not None:
-        return is_simaticml(data[:200000].decode("utf-8", "replace"))
-    return _is_block_file(path)
+    head = data[:200000].decode("utf-8", "replace") if data is not None else _head(path)
+    if is_simaticml(head) or head.lstrip().startswith("<SW."):  # a piece of an export (no
+        return True  # Document): the XML reader names what it lacks (s7xml-empty)
+    return data is None and _is_block_file(path, EXPORT_KINDS)
 
 
 def _read_file(path: Path, diagnostics: list[Diagnostic]) -> XmlRead | None:
@@ -74,7 +76,7 @@ def _companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic],
     tags: list[Tag] = []
     texts: dict[str, dict[str, str]] = {}
     sd: list[Parsed] = []
-    for path in sorted(p for p in folder.iterdir() if p.is_file() and p != entry):
+    for path in (p for p in vci.files(folder) if p != entry):
         suffix = path.suffix.lower()
         if suffix == ".xml":
             found = _read_file(path, diagnostics)
@@ -137,8 +139,9 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     extra: dict[str, str] = {}
     blocks, tags, texts, sd = _companions(folder, entry, diagnostics, extra)
     if entry is None:
-        owners = [p for p in sorted(folder.iterdir()) if _is_block_file(p)]
-        entry = next((p for p in owners if "SW.Blocks.OB" in _head(p)), None) or \
+        owners = [p for p in vci.files(folder) if _is_block_file(p)]
+        obs = [p for p in owners if "SW.Blocks.OB" in _head(p)]  # OB1 first, else any OB
+        entry = next((p for p in obs if _number(p) == 1), obs[0] if obs else None) or \
             next((p for p in owners if any(f"SW.Blocks.{k}" in _head(p) for k in CODE)), None)
         if entry is None:
             diagnostics.append(Diagnostic("s7xml-empty", {}, 0, 0))
@@ -183,3 +186,9 @@ def _attach(program: Program, graph: S7Program, found: XmlRead, data: bytes) -> 
 def _names(path: Path) -> set[str]:
     found = _read_file(path, [])
     return {b.name for b in found.blocks} if found is not None else set()
+
+
+def _number(path: Path) -> int:
+    """The number of a document's first block (0 when it has none)."""
+    found = _read_file(path, [])
+    return found.blocks[0].number if found is not None and found.blocks else 0

@@ -28,9 +28,15 @@ from ladderworks.core.dialects.s7.graph import (
 )
 from ladderworks.core.dialects.s7.texts import pick
 from ladderworks.core.dialects.s7.xml_fbd import to_lad
-from ladderworks.core.dialects.s7.xml_forms import KNOWN_VERSIONS, address_text, namespace, pin_in
+from ladderworks.core.dialects.s7.xml_forms import (
+    KNOWN_VERSIONS,
+    address_text,
+    namespace,
+    part_in,
+    pin_in,
+)
 from ladderworks.core.dialects.s7.xml_safe import Element, XmlRefused, parse
-from ladderworks.core.dialects.s7.xml_text import component, source_text
+from ladderworks.core.dialects.s7.xml_text import component, graph_text, source_text
 
 BLOCK_KINDS = {"SW.Blocks.OB": "OB", "SW.Blocks.FB": "FB", "SW.Blocks.FC": "FC",
                "SW.Blocks.GlobalDB": "GlobalDB", "SW.Blocks.InstanceDB": "InstanceDB"}
@@ -70,10 +76,14 @@ def _subelements(node: Element) -> str:
     return "[" + ", ".join(found.get(i, "") for i in range(low, max(found) + 1)) + "]"
 
 
+EXPORT_KINDS = ("SW.Blocks.", "SW.Types.PlcStruct", "SW.Tags.PlcTagTable")
+
+
 def is_simaticml(text: str) -> bool:
-    """True for a SimaticML document with blocks (a tag table alone is not a program)."""
-    head = text[:4000]
-    return "<Document" in head and "SW.Blocks." in text[:200000]
+    """True for a SimaticML document of blocks, a PLC data type or a tag table (the last two
+    open with their folder's blocks)."""
+    head, body = text[:4000], text[:200000]
+    return "<Document" in head and any(kind in body for kind in EXPORT_KINDS)
 
 
 def _multilingual(node: Element | None) -> dict[str, str]:
@@ -120,13 +130,17 @@ class _Reader:
     def run(self) -> XmlRead:
         engineering = self.root.child("Engineering")
         self.out.version = engineering.attrs.get("version", "") if engineering else ""
+        tables = 0  # an empty tag table (TIA's "Default tag table" often is) is no error
         for node in self.root.children:  # blocks and tag tables are the Document's children
             kind = BLOCK_KINDS.get(node.name)
             if kind is not None:
                 self.out.blocks.append(self.block(node, kind))
             elif node.name == "SW.Tags.PlcTagTable":
                 self.tag_table(node)
-        if not self.out.blocks and not self.out.tags:
+                tables += 1
+            elif node.name == "SW.Types.PlcStruct":  # a PLC data type (UDT): its members
+                self.out.blocks.append(self.plc_type(node))
+        if not self.out.blocks and not self.out.tags and not tables:
             self.error("s7xml-empty", self.root.line)
         return self.out
 
@@ -135,12 +149,13 @@ class _Reader:
         table = node.find("AttributeList", "Name")
         name = table.text.strip() if table is not None else ""
         for tag in node.walk():
-            if tag.name == "SW.Tags.PlcTag":
+            if tag.name in ("SW.Tags.PlcTag", "SW.Tags.PlcUserConstant"):
                 attributes = tag.child("AttributeList") or tag
                 comment = _chosen(_texts(tag).get("Comment", {}))
                 self.out.tags.append(Tag(attributes.text_of("Name"),
                                          attributes.text_of("DataTypeName"),
-                                         attributes.text_of("LogicalAddress"), comment, name))
+                                         attributes.text_of("LogicalAddress"), comment, name,
+                                         attributes.text_of("Value")))
 
     # -- blocks ---------------------------------------------------------------------------
     def block(self, node: Element, kind: str) -> Block:
@@ -170,6 +185,18 @@ class _Reader:
         units = [u for u in objects.all("SW.Blocks.CompileUnit")] if objects is not None else []
         for index, unit in enumerate(units, start=1):
             block.networks.append(self.network(block, index, unit))
+        return block
+
+    def plc_type(self, node: Element) -> Block:
+        """A `SW.Types.PlcStruct` as a `Type` block, its members under Static (as the SD
+        reader has a `.udt` source's)."""
+        attributes = node.child("AttributeList") or node
+        block = Block("Type", attributes.text_of("Name"))
+        sections = attributes.find("Interface", "Sections")
+        if sections is not None:
+            self.check_ns(sections, "Interface", 0, block.name)
+            block.sections["Static"] = [self.member(m) for s in sections.all("Section")
+                                        for m in s.all("Member")]
         return block
 
     def member(self, node: Element) -> Member:
@@ -226,9 +253,9 @@ class _Reader:
             if network.language not in ("LAD", "FBD"):
                 network.language = "LAD"
         else:
-            network.source = source_text(body)
+            network.source = graph_text(body) if body.name == "Graph" else source_text(body)
             if network.language in ("LAD", "FBD"):
-                network.language = "SCL" if body.name == "StructuredText" else "STL"
+                network.language = {"StructuredText": "SCL", "Graph": "GRAPH"}.get(body.name, "STL")
         return network
 
     def flgnet(self, block: Block, index: int, network: S7Network, net: Element) -> None:
@@ -251,7 +278,11 @@ class _Reader:
                     accesses[uid] = (None, label.attrs.get("Name", "") if label else "",
                                      node.line)
                 else:
-                    accesses[uid] = (self.operand(node), "", node.line)
+                    operand = self.operand(node)
+                    if operand.kind is not OperandKind.CONSTANT and not operand.path:
+                        operand = Operand(operand.kind, (), f"<{scope}>")  # named in the lowering
+                        self.warn("s7xml-access", node.line, uid=uid, scope=scope, **where)
+                    accesses[uid] = (operand, "", node.line)
             elif node.name in ("Part", "Call"):
                 if len(network.parts) >= MAX_PARTS:
                     self.error("s7xml-too-many", node.line, limit=MAX_PARTS, **where)
@@ -276,8 +307,9 @@ class _Reader:
         uid = node.attrs.get("UId", "")
         if node.name == "Call":
             return self.call(node, uid)
-        name = node.attrs.get("Name", "")
-        part = Part(uid, name, line=node.line)
+        name = part_in(node.attrs.get("Name", ""))
+        part = Part(uid, name, line=node.line,
+                    disabled_eno=node.attrs.get("DisabledENO", "").lower() == "true")
         if name not in PART_NAMES:
             self.warn("s7xml-part", node.line, uid=uid, part=name, **where)
         part.negated = frozenset(pin_in(name, n.attrs.get("Name", ""))

@@ -77,3 +77,35 @@ def source_text(body: Element) -> str:
 def _count(node: Element) -> int:
     text = node.attrs.get("Num", "1")
     return min(int(text), 1000) if text.isdigit() else 1
+
+
+def graph_text(body: Element) -> str:
+    """A GRAPH sequence (`Graph` network source) as text to show: its title, its steps (number,
+    name, initial) and each transition with the steps it leads from and to (a `Jump` link
+    marked); the actions, supervisions and interlocks are not shown [LW]."""
+    sequence = body.child("Sequence")
+    if sequence is None:
+        return "GRAPH"
+    title = sequence.find("Title", "MultiLanguageText")
+    lines = [f"GRAPH {title.text.strip()}" if title is not None else "GRAPH"]
+    steps = sequence.child("Steps")
+    for step in steps.all("Step") if steps is not None else []:
+        initial = " (initial)" if step.attrs.get("Init", "").lower() == "true" else ""
+        lines.append(f"S{step.attrs.get('Number', '?')} {step.attrs.get('Name', '')}{initial}")
+    before: dict[str, str] = {}
+    after: dict[str, str] = {}
+    connections = sequence.child("Connections")
+    for link in connections.all("Connection") if connections is not None else []:
+        start = (link.find("NodeFrom", "StepRef"), link.find("NodeFrom", "TransitionRef"))
+        end = (link.find("NodeTo", "StepRef"), link.find("NodeTo", "TransitionRef"))
+        jump = " (jump)" if link.text_of("LinkType") == "Jump" else ""
+        if start[0] is not None and end[1] is not None:
+            before[end[1].attrs.get("Number", "")] = "S" + start[0].attrs.get("Number", "?")
+        elif start[1] is not None and end[0] is not None:
+            after[start[1].attrs.get("Number", "")] = "S" + end[0].attrs.get("Number", "?") + jump
+    transitions = sequence.child("Transitions")
+    for transition in transitions.all("Transition") if transitions is not None else []:
+        number = transition.attrs.get("Number", "?")
+        lines.append(f"T{number} {transition.attrs.get('Name', '')}: "
+                     f"{before.get(number, '?')} -> {after.get(number, '?')}")
+    return "\n".join(lines)

@@ -18,7 +18,7 @@ from ladderworks.core.dialects.s7.graph import (
     Part,
     S7Network,
 )
-from ladderworks.core.dialects.s7.xml_forms import OPENNESS, address_attrs, pin_out
+from ladderworks.core.dialects.s7.xml_forms import OPENNESS, address_attrs, part_out, pin_out
 
 ENGINEERING = {0: "V14", 1: "V15", 2: "V15.1", 3: "V16", 4: "V17", 5: "V19"}
 _TAGS = {"OB": "SW.Blocks.OB", "FB": "SW.Blocks.FB", "FC": "SW.Blocks.FC",
@@ -125,7 +125,8 @@ def _part(part: Part, uid: str, ids: dict[str, str], pad: str,
         kind = "Cardinality" if key == "Card" else "Type"
         inner.append(f"{pad}  <TemplateValue Name={quoteattr(key)} Type=\"{kind}\">"
                      f"{escape(value)}</TemplateValue>")
-    head = f"{pad}<Part Name={quoteattr(part.name)} UId=\"{uid}\""
+    head = f"{pad}<Part Name={quoteattr(part_out(part.name))} UId=\"{uid}\"" + (
+        ' DisabledENO="true"' if part.disabled_eno else "")
     return [head + " />"] if not inner else [head + ">", *inner, f"{pad}</Part>"]
 
 

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from ladderworks.core.diagnostics import Severity
 from ladderworks.core.dialects.s7.graph import OperandKind
 from ladderworks.core.dialects.s7.sd_parser import ParseError, parse_sd
 from ladderworks.core.dialects.s7.tags import read_tag_table
@@ -131,12 +132,18 @@ def test_an_unknown_part_and_a_missing_label_are_diagnosed_at_their_network() ->
     assert [i.name for n in result.program.networks for i in n.instructions] == ["RD", "WRT"]
 
 
-def test_an_unknown_operand_and_a_call_are_diagnosed() -> None:
+def test_an_undeclared_tag_and_a_missing_call_are_warned_and_the_rest_runs() -> None:
+    """A block exported without its tag table or its callees (docs: "Real exports tried"):
+    the tag gets a place of LadderWorks' own, the call is shown only; both warnings."""
     text = ('ORGANIZATION_BLOCK "Main"\n NETWORK\n  RUNG wire#powerrail\n   Contact( "Nope" )\n'
             '   Coil( %Q0.0 )\n  END_RUNG\n END_NETWORK\n NETWORK\n  RUNG wire#powerrail\n'
             '   "Missing_FC"( a := 1 )\n  END_RUNG\n END_NETWORK\nEND_ORGANIZATION_BLOCK\n')
-    codes = [d.code for d in parse_bytes(text.encode("utf-8")).diagnostics]
-    assert codes == ["s7-operand-unknown", "s7-call-unknown"]
+    result = parse_bytes(text.encode("utf-8"))
+    assert [(d.code, d.severity) for d in result.diagnostics] == [
+        ("s7-tag-undeclared", Severity.WARNING), ("s7-call-unknown", Severity.WARNING)]
+    names = [i.name for n in result.program.networks for i in n.instructions]
+    assert names[-2:] == ["RD", "WRT"]
+    assert '"Nope"' in result.program.symbols.by_symbol
 
 
 def test_a_loop_of_named_wires_gives_no_power_and_no_hang() -> None:
