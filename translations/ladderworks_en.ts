@@ -2117,7 +2117,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="145"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -2132,22 +2132,22 @@
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="182"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="293"/>
         <source>This instruction is not placed from the palette in this program</source>
         <translation>This instruction is not placed from the palette in this program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="375"/>
         <source>Output pins</source>
         <translation>Output pins</translation>
     </message>
@@ -2157,12 +2157,12 @@
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="193"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="197"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -2172,19 +2172,17 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="159"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
@@ -2195,13 +2193,12 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="66"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
@@ -2211,17 +2208,17 @@
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="402"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="414"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="427"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>

@@ -2117,7 +2117,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="145"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -2132,22 +2132,22 @@
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="182"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="293"/>
         <source>This instruction is not placed from the palette in this program</source>
         <translation>Bu komut bu programda paletten yerleştirilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="375"/>
         <source>Output pins</source>
         <translation>Çıkış uçları</translation>
     </message>
@@ -2157,12 +2157,12 @@
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="193"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="197"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -2172,19 +2172,17 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="159"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
@@ -2195,13 +2193,12 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="66"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -2211,17 +2208,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="402"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="414"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="427"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
