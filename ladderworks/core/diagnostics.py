@@ -537,8 +537,9 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "'{part}' cannot be written in the S7 block's file form: make this "
         "change in TIA Portal"),
     "s7-save-drawing": QT_TRANSLATE_NOOP(
-        "Diagnostic", "network {network} is not an S7 network yet (see the error list): "
-        "the S7 block's file is not written"),
+        "Diagnostic", "network {network} is not a complete S7 network yet (an element S7 "
+        "does not have, an operand missing or still <???>): the S7 block's file is not "
+        "written"),
     # SimaticML XML (docs/dialects.md, SimaticML XML)
     "s7xml-too-large": QT_TRANSLATE_NOOP(
         "Diagnostic", "SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks "

@@ -19,7 +19,7 @@ from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
-from ladderworks.gui import file_dialogs, folder_program, questions
+from ladderworks.gui import file_dialogs, folder_program, questions, save_refusal
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.document import (
     DiskState,
@@ -100,6 +100,7 @@ class FileActions(_Window):
     recovery: RecoveryStore
     autosaver: Autosaver
     _last_save_result: bool
+    save_as_offered: bool  # inside the Save As a refused Save offered (save_refusal.py)
     if TYPE_CHECKING:  # what MainWindow provides
         editor: LadderEditor
         text_view: ProgramTextView
@@ -124,6 +125,7 @@ class FileActions(_Window):
         self.document.modified_changed.connect(self.update_title)
         self.document.changed_outside.connect(self._on_changed_outside)
         self._last_save_result = False
+        self.save_as_offered = False
         self.recovery = RecoveryStore()
         self.autosaver = Autosaver(self.recovery, self.recovery_snapshot, self)
         self.autosaver.failed.connect(self.show_message)
@@ -345,8 +347,8 @@ class FileActions(_Window):
                 return None
             self.document.use_utf8()
             return make()
-        except DiagnosticError as error:  # a dialect that cannot write a change (S7): kept
-            self.warn(translate("MainWindow", "Save"), diagnostic_text(error.diagnostic))
+        except DiagnosticError as error:  # a change its dialect cannot write (S7): kept
+            self._last_save_result = save_refusal.refused(self, path, error.diagnostic)
             return None
 
     def save_to(self, path: str | Path) -> bool:
@@ -377,23 +379,36 @@ class FileActions(_Window):
         go_on = self._may_write(path)
         if not go_on:
             return go_on is None and self._last_save_result
-        drafts = False
-        if showing_text:
-            text = self.text_view.toPlainText()
-            text = text if text.endswith("\n") else text + "\n"
-            data = self._encoded(path, lambda: self.document.encode_text(text))
-        else:
-            program, diagnostics = self._program_to_save()
-            self.dialect = dialect_of(program)
-            drafts = has_errors(diagnostics)
-            self.errors.set_diagnostics(diagnostics)
-            if drafts:
-                self.errors.show()
-            data = self._encoded(path, lambda: self.document.encode(program))
+        data, drafts = self.bytes_to_save(path)
         if data is None:
-            return False
+            return self._last_save_result
         if not self._write(path, data):
             return False
+        self.after_save(path, drafts)
+        return True
+
+    def bytes_to_save(self, path: Path) -> tuple[bytes | None, bool]:
+        """The bytes Save writes to `path` and whether networks with errors are kept as
+        drawings; None when nothing is written (declined, or refused: `save_refusal`)."""
+        self._last_save_result = False
+        if self.model.showing_text:
+            text = self.text_view.toPlainText()
+            text = text if text.endswith("\n") else text + "\n"
+            return self._encoded(path, lambda: self.document.encode_text(text)), False
+        program, diagnostics = self._program_to_save()
+        self.dialect = dialect_of(program)
+        drafts = has_errors(diagnostics)
+        self.errors.set_diagnostics(diagnostics)
+        if drafts:
+            self.errors.show()
+        return self._encoded(path, lambda: self.document.encode(program)), drafts
+
+    def save_answer(self) -> bool:
+        """What Save returns when `bytes_to_save` gave nothing (True: Save As saved it)."""
+        return self._last_save_result
+
+    def after_save(self, path: Path, drafts: bool, message: str = "") -> None:
+        """The program is saved as `path`: unmodified, remembered, the status bar says so."""
         self.model.mark_saved()
         self.text_view.document().setModified(False)
         self.remember_file(path)
@@ -405,9 +420,8 @@ class FileActions(_Window):
                 "Saved {0}; networks with errors are kept as drawings (see the error list)",
             ).format(path.name))
         else:
-            self.show_message(translate("MainWindow", "Saved {0}").format(path.name))
+            self.show_message(message or translate("MainWindow", "Saved {0}").format(path.name))
         self.file_saved.emit(str(path))
-        return True
 
     def _write(self, path: Path, data: bytes) -> bool:
         """Write the program and its PMC parameters; warn and False when it fails."""

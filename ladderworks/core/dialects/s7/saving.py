@@ -15,7 +15,8 @@ from collections.abc import Collection
 
 from ladderworks.core.diagnostics import Refused
 from ladderworks.core.dialects.s7.as_read import FORMS
-from ladderworks.core.dialects.s7.graph import Block
+from ladderworks.core.dialects.s7.graph import Block, S7Network
+from ladderworks.core.dialects.s7.palette import PLACEHOLDER
 from ladderworks.core.dialects.s7.sd_save import SaveRefused, save_sd
 from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.dialects.s7.xml_save import save_xml
@@ -53,14 +54,25 @@ def changed_since_read(program: Program) -> bool:
     return isinstance(model, S7Model) and model.read is not None and not model.unchanged()
 
 
+def _placeholder(network: S7Network) -> bool:
+    """True when an operand, instance or label of the network is still TIA's `<???>`."""
+    ends = [end for wire in network.wires for end in (wire.source, *wire.targets)]
+    operands = [e.operand for e in ends if e.operand is not None]
+    operands += [p.instance for p in network.parts if p.instance is not None]
+    return any(PLACEHOLDER in (o.text, *o.path) for o in operands) or \
+        any(p.label == PLACEHOLDER for p in network.parts)
+
+
 def write_changed(program: Program) -> str | None:
     """The text Save writes for a changed S7 program, or None when its changes are not known as
     changes of its graph (Save then refuses them); Refused when a network cannot be written."""
     model = program.model
     if not isinstance(model, S7Model) or model.read is None or model.unchanged():
         return None
-    if model.unfinished:
-        raise Refused("s7-save-drawing", network=model.unfinished[0] + 1)
+    unfinished = [*model.unfinished, *(i for i in model.changed()
+                                       if _placeholder(model.entry.networks[i]))]
+    if unfinished:
+        raise Refused("s7-save-drawing", network=min(unfinished) + 1)
     if [n.key() for n in lower_graph(model)] != [n.key() for n in program.networks]:
         return None
     others = [b for b in model.graph.blocks if b is not model.entry]

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic
@@ -143,6 +144,10 @@ class S7Model:
     def spans(self) -> list[range]:
         """The engine networks of each drawn network."""
         return [self.span(i) for i in range(len(self.entry.networks))]
+
+    def source_file(self) -> Path | None:
+        """The entry block's file (None: read from a text or built in memory)."""
+        return self.read.path if self.read is not None else None
 
     def changed(self) -> list[int]:
         """The indexes of the entry block's networks that are new or differ from the file's."""

@@ -1,0 +1,158 @@
+"""Issue 39, item 2 in the IDE: an S7 network edited in the console is saved with Ctrl+S into
+the file it was read from, in its own form — only that network's lines change (SD spliced,
+XML's FlgNet replaced), the file opens again as edited; undone back, it saves byte for byte. A
+folder program writes its entry block's file only; a change the file cannot hold is refused
+with its reason and Save As offered, the file kept."""
+
+from __future__ import annotations
+
+import difflib
+import shutil
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import Qt
+from pytestqt.qtbot import QtBot
+
+from ladderworks.core.ladder.model import Contact
+from ladderworks.gui import file_dialogs
+from ladderworks.gui.main_window import MainWindow
+from tests.gui.conftest import Answers, type_text
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "resources" / "examples"
+CTRL = Qt.KeyboardModifier.ControlModifier
+FORMS = [("s7", "Main.s7dcl"), ("s7-xml", "Main.xml")]
+
+
+def _copy(tmp_path: Path, form: str, name: str) -> Path:
+    shutil.copytree(EXAMPLES / form / "timers", tmp_path / "timers")
+    return tmp_path / "timers" / name
+
+
+def _retype_operand(qtbot: QtBot, window: MainWindow, network: int, text: str) -> None:
+    """ENTER on the network's first contact, its operand replaced by typing, ENTER."""
+    editor = window.editor
+    editor.setFocus()
+    editor.move_cursor(network, 0, 0)
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    inline = editor.inline_editor
+    qtbot.waitUntil(inline.isVisible)
+    qtbot.keyClick(inline, Qt.Key.Key_A, CTRL)
+    type_text(qtbot, inline, text)
+    qtbot.keyClick(inline, Qt.Key.Key_Return)
+    contact = editor.networks[network].cells[(0, 0)]
+    assert isinstance(contact, Contact) and contact.texts == (text,)
+
+
+def _changed_lines(before: bytes, after: bytes) -> list[int]:
+    old = before.decode("utf-8-sig").splitlines()
+    new = after.decode("utf-8-sig").splitlines()
+    return [line for tag, i1, i2, _j1, _j2 in difflib.SequenceMatcher(
+        None, old, new, autojunk=False).get_opcodes() if tag != "equal"
+        for line in range(i1 + 1, i2 + 1)]
+
+
+def _network_lines(data: bytes, form: str) -> range:
+    """The lines of the file's first network: SD's NETWORK … END_NETWORK, XML's first unit."""
+    lines = data.decode("utf-8-sig").splitlines()
+    start = "NETWORK" if form == "s7" else "<SW.Blocks.CompileUnit "
+    stop = "END_NETWORK" if form == "s7" else "</SW.Blocks.CompileUnit>"
+    first = next(i for i, line in enumerate(lines) if line.strip().startswith(start))
+    last = next(i for i, line in enumerate(lines) if i > first and line.strip() == stop)
+    return range(first + 1, last + 2)
+
+
+@pytest.mark.parametrize(("form", "name"), FORMS)
+def test_an_operand_changed_in_the_console_is_saved_into_the_block_file(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path, form: str, name: str) -> None:
+    path = _copy(tmp_path, form, name)
+    before = path.read_bytes()
+    assert window.load(path)
+    _retype_operand(qtbot, window, 0, '"Lamba 2"')
+    assert window.is_modified()
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    assert not window.is_modified(), window.last_warning
+    after = path.read_bytes()
+    changed = _changed_lines(before, after)
+    assert changed and set(changed) <= set(_network_lines(before, form)), changed
+    assert after.startswith(before[:3]) and after.count(b"\r\n") == before.count(b"\r\n")
+    assert ("Lamba 2" if form == "s7" else 'Name="Lamba 2"').encode() in after
+    # read again: the edited program (and it runs the same: tests/core/…/test_edit_save.py)
+    assert window.load(path)
+    contact = window.editor.networks[0].cells[(0, 0)]
+    assert isinstance(contact, Contact) and contact.texts == ('"Lamba 2"',)
+    _retype_operand(qtbot, window, 0, '"Start"')  # as it was: the file as read
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    assert path.read_bytes() == before
+
+
+@pytest.mark.parametrize(("form", "name"), FORMS)
+def test_an_edit_undone_saves_the_file_byte_for_byte(qtbot: QtBot, window: MainWindow,
+                                                     tmp_path: Path, form: str,
+                                                     name: str) -> None:
+    path = _copy(tmp_path, form, name)
+    before = path.read_bytes()
+    assert window.load(path)
+    _retype_operand(qtbot, window, 0, "%I0.7")
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    assert path.read_bytes() != before
+    qtbot.keyClick(window.editor, Qt.Key.Key_Z, CTRL)  # undo, then save again
+    assert window.is_modified()
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    assert path.read_bytes() == before
+
+
+def test_a_folder_program_writes_its_entry_block_file_only(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path, answers: Answers,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    folder = tmp_path / "timers"
+    shutil.copytree(EXAMPLES / "s7" / "timers", folder)
+    before = {p.name: p.read_bytes() for p in folder.iterdir()}
+    monkeypatch.setattr(file_dialogs, "open_folder_name", lambda *_args: str(folder))
+    window.actions_by_name["action_open_folder"].trigger()
+    assert window.path == folder
+    window.editor.move_cursor(1, 0, 0)
+    window.actions_by_name["action_delete_network"].trigger()  # the second network
+    monkeypatch.setattr(file_dialogs, "save_file_name", lambda *_args: pytest.fail("asked"))
+    assert window.save()
+    assert window.path == folder and not window.is_modified()
+    assert "Main.s7dcl" in window.statusBar().currentMessage()
+    after = {p.name: p.read_bytes() for p in folder.iterdir()}
+    assert {n for n in after if after[n] != before[n]} == {"Main.s7dcl"}
+    assert b"MLC_t2" not in after["Main.s7dcl"] and b"MLC_t1" in after["Main.s7dcl"]
+    assert window.load(folder) and len(window.editor.networks) == 2  # one network and blank
+    _retype_operand(qtbot, window, 0, "%I0.7")
+    (folder / "Main.s7dcl").write_bytes(before["Main.s7dcl"])  # changed outside: asked
+    answers.queue.append("cancel")
+    assert not window.save()
+    assert answers.asked[-1][2] == ["reload", "keep", "save_as", "cancel"]
+    assert (folder / "Main.s7dcl").read_bytes() == before["Main.s7dcl"]
+
+
+@pytest.mark.parametrize(("form", "name"), FORMS)
+def test_a_drawing_s7_cannot_hold_is_refused_and_save_as_offered(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path, answers: Answers, form: str,
+        name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    path = _copy(tmp_path, form, name)
+    before = path.read_bytes()
+    assert window.load(path)
+    index = window.editor.model.blank_index()  # a TON from the palette, its PT left <???>
+    edits = window.editor.edits
+    edits.open_function_dialog(index, 0, 2, "S7.TON")
+    dialog = edits.operand_dialog
+    assert dialog is not None
+    dialog.edits[0].setText('"Yeni_TON"')
+    dialog.accept()
+    assert window.is_modified()
+    answers.queue.append("cancel")
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    title, text, keys = answers.asked[-1]
+    assert f"network {index + 1} is not a complete S7 network" in text
+    assert title == "Change not saved" and keys == ["save_as", "cancel"]
+    assert path.read_bytes() == before and window.is_modified()
+    copy = tmp_path / "copy.s7dcl"
+    monkeypatch.setattr(file_dialogs, "save_file_name", lambda *_args: str(copy))
+    answers.queue.append("save_as")
+    assert not window.save()  # Save As is offered; the copy cannot hold it either
+    assert "not written" in window.last_warning and not copy.exists()
+    assert path.read_bytes() == before and len(answers.asked) == 2
