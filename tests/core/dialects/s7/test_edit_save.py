@@ -18,10 +18,17 @@ from ladderworks.core.diagnostics import Refused
 from ladderworks.core.dialects.s7 import opening
 from ladderworks.core.dialects.s7.graph_shape import shape
 from ladderworks.core.dialects.s7.source import S7Model, match_drawn
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il.printer import encode_program
 from ladderworks.core.il.program import Program
 from ladderworks.core.ladder import edits
 from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
+from ladderworks.core.ladder.find_replace import (
+    find,
+    parse_query,
+    replacement_address,
+    replacements,
+)
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderDocument, LadderNetwork
 
 ROOT = Path(__file__).resolve().parents[4] / "resources" / "examples"
@@ -240,3 +247,29 @@ def test_a_changed_drawing_names_the_network_it_replaces() -> None:
     assert match_drawn([a, b, c], [a, c]) == ([0, 2], [None, None])  # b removed
     assert match_drawn([a, b], [changed, a, b]) == ([None, 0, 1], [None, None, None])  # new
     assert match_drawn([a, b, c], [changed, d, c]) == ([None, None, 2], [0, 1, None])
+
+
+@pytest.mark.parametrize(("form", "suffix"), FORMS)
+def test_find_and_replace_by_a_tag_name_is_saved_as_typed(tmp_path: Path, form: str,
+                                                          suffix: str) -> None:
+    """Find "Lamba 1" (a tag as written) and the TON's ET, Geçen Süre; replace them: the coil
+    and the box pin show the replacement as typed, and the file gets it."""
+    path = _copy(tmp_path, form, "timers", suffix)
+
+    def edit(doc: LadderDocument, model: S7Model) -> None:
+        symbols = _open(path).symbols
+        for typed, written in (('"Lamba 1"', "%Q0.7"), ("Geçen Süre", "%MD20")):
+            query = parse_query(typed, symbols, "s7")
+            assert query is not None and query.address is not None
+            hits = find(doc.networks, query, symbols)
+            assert [h.network for h in hits] == [0]
+            new = replacement_address(written, query, symbols, "s7")
+            for index, change in replacements(doc.networks, hits, query, new, written,
+                                              spelling("s7").address):
+                change.apply(doc.networks[index])
+
+    before, out, edited = _saved(path, edit)
+    assert suffix == ".xml" or (b"Coil( %Q0.7 )" in out and b"et => %MD20" in out)
+    assert all(line in _region(_open_bytes(before, path), 0)
+               for line in _changed_lines(before, out))
+    _same_program(path, edited)
