@@ -102,11 +102,12 @@ def test_an_edit_undone_saves_the_file_byte_for_byte(qtbot: QtBot, window: MainW
     assert path.read_bytes() == before
 
 
+@pytest.mark.parametrize(("form", "name"), FORMS)
 def test_a_folder_program_writes_its_entry_block_file_only(
         qtbot: QtBot, window: MainWindow, tmp_path: Path, answers: Answers,
-        monkeypatch: pytest.MonkeyPatch) -> None:
+        monkeypatch: pytest.MonkeyPatch, form: str, name: str) -> None:
     folder = tmp_path / "timers"
-    shutil.copytree(EXAMPLES / "s7" / "timers", folder)
+    shutil.copytree(EXAMPLES / form / "timers", folder)
     before = {p.name: p.read_bytes() for p in folder.iterdir()}
     monkeypatch.setattr(file_dialogs, "open_folder_name", lambda *_args: str(folder))
     window.actions_by_name["action_open_folder"].trigger()
@@ -116,17 +117,20 @@ def test_a_folder_program_writes_its_entry_block_file_only(
     monkeypatch.setattr(file_dialogs, "save_file_name", lambda *_args: pytest.fail("asked"))
     assert window.save()
     assert window.path == folder and not window.is_modified()
-    assert "Main.s7dcl" in window.statusBar().currentMessage()
+    assert name in window.statusBar().currentMessage()
     after = {p.name: p.read_bytes() for p in folder.iterdir()}
-    assert {n for n in after if after[n] != before[n]} == {"Main.s7dcl"}
-    assert b"MLC_t2" not in after["Main.s7dcl"] and b"MLC_t1" in after["Main.s7dcl"]
+    assert {n for n in after if after[n] != before[n]} == {name}
+    first, second = (b"MLC_t1", b"MLC_t2") if form == "s7" else (b"TON 10 s", b"Second lamp")
+    assert second not in after[name] and first in after[name]
     assert window.load(folder) and len(window.editor.networks) == 2  # one network and blank
     _retype_operand(qtbot, window, 0, "%I0.7")
-    (folder / "Main.s7dcl").write_bytes(before["Main.s7dcl"])  # changed outside: asked
+    (folder / name).write_bytes(before[name])  # changed outside: asked
     answers.queue.append("cancel")
     assert not window.save()
     assert answers.asked[-1][2] == ["reload", "keep", "save_as", "cancel"]
-    assert (folder / "Main.s7dcl").read_bytes() == before["Main.s7dcl"]
+    assert (folder / name).read_bytes() == before[name]
+    answers.queue.append("keep")
+    assert window.save() and (folder / name).read_bytes() not in (before[name], after[name])
 
 
 @pytest.mark.parametrize(("form", "name"), FORMS)
