@@ -160,3 +160,25 @@ def test_a_drawing_s7_cannot_hold_is_refused_and_save_as_offered(
     assert not window.save()  # Save As is offered; the copy cannot hold it either
     assert "not written" in window.last_warning and not copy.exists()
     assert path.read_bytes() == before and len(answers.asked) == 2
+
+
+def test_replace_all_of_a_tag_is_saved_into_the_block_file(qtbot: QtBot, window: MainWindow,
+                                                            tmp_path: Path) -> None:
+    """Ctrl+H: "Lamba 1" (a tag as written) replaced by %Q0.7 everywhere, then Ctrl+S."""
+    path = _copy(tmp_path, "s7", "Main.s7dcl")
+    before = path.read_bytes()
+    assert window.load(path)
+    window.editor.setFocus()
+    qtbot.keyClick(window.editor, Qt.Key.Key_H, CTRL)
+    dialog = window.find_dialog
+    assert dialog is not None
+    qtbot.waitUntil(dialog.isVisible)
+    dialog.find_text.setText('"Lamba 1"')
+    dialog.replace_text.setText("%Q0.7")
+    dialog.replace_all_button.click()
+    assert "replaced in 1" in dialog.message.text()
+    window.editor.setFocus()
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    after = path.read_bytes()
+    assert b"Coil( %Q0.7 )" in after and b'Coil( "Lamba 1" )' not in after
+    assert set(_changed_lines(before, after)) <= set(_network_lines(before, "s7"))
