@@ -1749,7 +1749,7 @@
     <message>
         <location filename="../ladderworks/gui/find_replace.py" line="194"/>
         <location filename="../ladderworks/gui/find_replace.py" line="205"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="280"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="281"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
@@ -1764,43 +1764,43 @@
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="264"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="269"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="270"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="285"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="287"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="287"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="289"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="296"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
         <source>Address, symbol or words, {0}</source>
         <translation>Address, symbol or words, {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
         <source>Address or symbol, {0}</source>
         <translation>Address or symbol, {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/find_replace.py" line="176"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="306"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
@@ -1815,42 +1815,42 @@
         <translation>network comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="307"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="307"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="309"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="308"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="310"/>
         <source>Find &amp;previous</source>
         <translation>Find &amp;previous</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="309"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="311"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="310"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="312"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="311"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="313"/>
         <source>Close</source>
         <translation>Close</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="312"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="314"/>
         <source>Also in comments and signal descriptions</source>
         <translation>Also in comments and signal descriptions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="313"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="315"/>
         <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
         <translation>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</translation>
     </message>
@@ -2445,117 +2445,117 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="552"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="525"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="162"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="71"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="129"/>
         <source>Ladder programs</source>
         <translation>Ladder programs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="130"/>
         <source>Mnemonic programs</source>
         <translation>Mnemonic programs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="73"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="131"/>
         <source>LADDER-III exports</source>
         <translation>LADDER-III exports</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="74"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="132"/>
         <source>Delta DVP instruction lists</source>
         <translation>Delta DVP instruction lists</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="76"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="134"/>
         <source>WPLSoft projects</source>
         <translation>WPLSoft projects</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="77"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="135"/>
         <source>Fatek WinProladder listings</source>
         <translation>Fatek WinProladder listings</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="79"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="137"/>
         <source>Fatek WinProladder projects</source>
         <translation>Fatek WinProladder projects</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="80"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="138"/>
         <source>Siemens S7-1200 SIMATIC SD blocks</source>
         <translation>Siemens S7-1200 SIMATIC SD blocks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="81"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="139"/>
         <source>Siemens S7-1200 SimaticML exports</source>
         <translation>Siemens S7-1200 SimaticML exports</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="125"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="163"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="136"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="182"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="227"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="245"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="228"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="246"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="568"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="219"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="541"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="233"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="233"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="278"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="251"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="259"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="366"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="438"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
         <location filename="../ladderworks/gui/folder_program.py" line="84"/>
         <location filename="../ladderworks/gui/folder_program.py" line="104"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
@@ -2564,90 +2564,90 @@
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="366"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="507"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="480"/>
         <location filename="../ladderworks/gui/folder_program.py" line="104"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="512"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="485"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="449"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="567"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="584"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="557"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="423"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="448"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="459"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="432"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="467"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="468"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="441"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="490"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="507"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="511"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="480"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="464"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="515"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="488"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, Qt
 from PySide6.QtWidgets import QMessageBox
 
-from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Diagnostic, DiagnosticError, has_errors
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, has_errors
 from ladderworks.core.dialects.delta.dvp_program import save_refused
 from ladderworks.core.dialects.fatek.pdw_file import is_pdw_path
 from ladderworks.core.families import new_program
@@ -63,34 +63,6 @@ def _when(copy: RecoveredCopy) -> str:
     moment = QDateTime.fromSecsSinceEpoch(int(copy.saved_at.timestamp()))
     return QLocale().toString(moment, QLocale.FormatType.ShortFormat)
 
-
-
-# File > Open's filters: each kind of program file with its name patterns (names translated,
-# patterns never); the first filter, every program, is their union
-OPEN_FILTERS: tuple[tuple[str, str], ...] = (
-    (QT_TRANSLATE_NOOP("MainWindow", "Ladder programs"), "*.LAD *.lad"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Mnemonic programs"), "*.MOD *.mod *.mnc *.MNC"),
-    (QT_TRANSLATE_NOOP("MainWindow", "LADDER-III exports"), "*.txt *.TXT *.mnc *.MNC"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Delta DVP instruction lists"),
-     "*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV"),
-    (QT_TRANSLATE_NOOP("MainWindow", "WPLSoft projects"), "*.dvp *.DVP"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Fatek WinProladder listings"),
-     "*.lst *.LST *.fbs *.FBS *.txt *.TXT"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Fatek WinProladder projects"), "*.pdw *.PDW"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SIMATIC SD blocks"), "*.s7dcl *.S7DCL"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SimaticML exports"), "*.xml *.XML"),
-)
-
-
-def open_filters() -> str:
-    """File > Open's filter string in the UI language: every program, each kind, all files."""
-    patterns: list[str] = []
-    for _name, kind in OPEN_FILTERS:
-        patterns += [pattern for pattern in kind.split() if pattern not in patterns]
-    parts = [f"{translate('MainWindow', 'Ladder and mnemonic programs')} ({' '.join(patterns)})"]
-    parts += [f"{translate('MainWindow', name)} ({kind})" for name, kind in OPEN_FILTERS]
-    parts.append(f"{translate('MainWindow', 'All files')} (*)")
-    return ";;".join(parts)
 
 class FileActions(_Window):
     """File > New / Open / Save / Save As / Import / Export, and recovery: MainWindow's part
@@ -285,7 +257,7 @@ class FileActions(_Window):
         name = file_dialogs.open_file_name(
             self, translate("MainWindow", "Open program"),
             str(self.path.parent if self.path else ""),
-            open_filters())
+            file_dialogs.open_filters())
         if name:
             self.load(name)
 
