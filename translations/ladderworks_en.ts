@@ -1607,61 +1607,66 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <source>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</source>
+        <translation>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</source>
         <translation>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="544"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="555"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="555"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="567"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="567"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="570"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="570"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="573"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
@@ -2061,7 +2066,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="141"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -2071,42 +2076,47 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="45"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="150"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="178"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="292"/>
         <source>This instruction is not placed from the palette in this program</source>
         <translation>This instruction is not placed from the palette in this program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="331"/>
+        <source>Label {0}</source>
+        <translation>Label {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="396"/>
         <source>Output pins</source>
         <translation>Output pins</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="47"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="189"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="193"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -2116,19 +2126,19 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="57"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="302"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="62"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="303"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
@@ -2139,13 +2149,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="136"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="131"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
@@ -2155,17 +2165,17 @@
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="435"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="448"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -2445,14 +2455,14 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="525"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="524"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="134"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
@@ -2502,60 +2512,60 @@
         <translation>Siemens S7-1200 SimaticML exports</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="125"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="124"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="136"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="181"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="199"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="217"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="219"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="541"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="251"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="250"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="259"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
         <location filename="../ladderworks/gui/folder_program.py" line="84"/>
         <location filename="../ladderworks/gui/folder_program.py" line="104"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
@@ -2564,90 +2574,90 @@
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="480"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
         <location filename="../ladderworks/gui/folder_program.py" line="104"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="485"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="539"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="557"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="556"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="432"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="441"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="480"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="483"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="464"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="488"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>

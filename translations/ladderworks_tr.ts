@@ -1607,61 +1607,66 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <source>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</source>
+        <translation>&apos;{text}&apos; bir S7 atlama etiketi değil: harfler, rakamlar ve _; rakamla başlamaz</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</source>
         <translation>network {network} henüz tamamlanmış bir S7 network&apos;ü değil (S7&apos;de olmayan bir eleman, eksik ya da hâlâ &lt;???&gt; olan bir operand): S7 bloğunun dosyası yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="544"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="555"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="555"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="567"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="567"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="570"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="570"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="573"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>
@@ -2061,7 +2066,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="141"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -2071,42 +2076,47 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="45"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="150"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="178"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="292"/>
         <source>This instruction is not placed from the palette in this program</source>
         <translation>Bu komut bu programda paletten yerleştirilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="331"/>
+        <source>Label {0}</source>
+        <translation>Etiket {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="396"/>
         <source>Output pins</source>
         <translation>Çıkış uçları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="47"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="189"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="193"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -2116,19 +2126,19 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="57"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="302"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="62"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="303"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
@@ -2139,13 +2149,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="136"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="131"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -2155,17 +2165,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="435"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="448"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -2445,14 +2455,14 @@
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="525"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="524"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="134"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
@@ -2502,60 +2512,60 @@
         <translation>Siemens S7-1200 SimaticML dışa aktarımları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="125"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="124"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="136"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="181"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="199"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="217"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="219"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="541"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="251"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="250"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="259"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
         <location filename="../ladderworks/gui/folder_program.py" line="84"/>
         <location filename="../ladderworks/gui/folder_program.py" line="104"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
@@ -2564,90 +2574,90 @@
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="480"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
         <location filename="../ladderworks/gui/folder_program.py" line="104"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="485"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="539"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="557"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="556"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="432"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="441"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="480"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="483"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="464"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="488"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>

@@ -182,3 +182,44 @@ def test_replace_all_of_a_tag_is_saved_into_the_block_file(qtbot: QtBot, window:
     after = path.read_bytes()
     assert b"Coil( %Q0.7 )" in after and b'Coil( "Lamba 1" )' not in after
     assert set(_changed_lines(before, after)) <= set(_network_lines(before, "s7"))
+
+
+@pytest.mark.parametrize(("form", "name"), FORMS)
+def test_a_label_placed_from_the_palette_is_the_networks_jump_label(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path, form: str, name: str) -> None:
+    """The S7 palette's LABEL names the network (TIA's jump label): a name S7 cannot hold is
+    refused with its reason; one it can is saved as the network's label and undone in one
+    step."""
+    shutil.copytree(EXAMPLES / form / "jumps", tmp_path / "jumps")
+    path = tmp_path / "jumps" / name
+    before = path.read_bytes()
+    assert window.load(path)
+    edits = window.editor.edits
+    messages: list[str] = []
+    window.editor.message.connect(messages.append)
+    edits.open_function_dialog(1, 0, 0, "S7.LABEL")
+    dialog = edits.operand_dialog
+    assert dialog is not None and [e.text() for e in dialog.edits] == [""]
+    dialog.edits[0].setText("iki kelime")
+    dialog.accept()
+    assert window.editor.networks[1].label == "" and "no S7 jump label" in messages[-1]
+    edits.open_function_dialog(1, 0, 0, "S7.LABEL")
+    dialog = edits.operand_dialog
+    assert dialog is not None
+    dialog.edits[0].setText("Döngü_2")
+    dialog.accept()
+    assert window.editor.networks[1].label == "Döngü_2" and window.is_modified()
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    after = path.read_bytes()
+    assert "Döngü_2".encode() in after and b"AA_1" in after
+    assert window.load(path) and window.editor.networks[1].label == "Döngü_2"
+    window.editor.setFocus()
+    edits.open_function_dialog(1, 0, 0, "S7.LABEL")
+    dialog = edits.operand_dialog
+    assert dialog is not None and dialog.edits[0].text() == "Döngü_2"
+    dialog.edits[0].setText("")
+    dialog.accept()  # no label: the file as first read
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    assert path.read_bytes() == before
+    qtbot.keyClick(window.editor, Qt.Key.Key_Z, CTRL)
+    assert window.editor.networks[1].label == "Döngü_2"

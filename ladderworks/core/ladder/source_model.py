@@ -54,6 +54,10 @@ class SourceModel(Protocol):
         """The element with its operands (in the order of `operands`) set."""
         ...
 
+    def label(self, text: str) -> str | Diagnostic:
+        """A jump label typed for a network, as the source writes it, or why it is none."""
+        ...
+
     def source_file(self) -> Path | None:
         """The file the drawn source was read from (a folder's entry block's), else None."""
         ...

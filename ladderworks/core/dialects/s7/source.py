@@ -11,6 +11,7 @@ networks into the file.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -27,6 +28,7 @@ from ladderworks.core.il.program import Network, Program
 from ladderworks.core.ladder.model import Coil, Contact, Element, LadderNetwork
 
 Finish = Callable[[Program, S7Program, Layout, Block], None]  # names the program's symbols
+LABEL_NAME = re.compile(r"[^\W\d]\w*")  # a jump label: an identifier (letters, digits, _)
 
 
 @dataclass(slots=True)
@@ -144,6 +146,14 @@ class S7Model:
     def spans(self) -> list[range]:
         """The engine networks of each drawn network."""
         return [self.span(i) for i in range(len(self.entry.networks))]
+
+    def label(self, text: str) -> str | Diagnostic:
+        """A jump label typed for a network (`Kucuk`, `AA_1`; "" none): an identifier as the
+        SD text writes `Label( x )`, else `s7-label-name`."""
+        text = text.strip()
+        if not text or LABEL_NAME.fullmatch(text):
+            return text
+        return Diagnostic("s7-label-name", {"text": text}, 0, 0)
 
     def source_file(self) -> Path | None:
         """The entry block's file (None: read from a text or built in memory)."""
