@@ -223,3 +223,29 @@ def test_a_label_placed_from_the_palette_is_the_networks_jump_label(
     assert path.read_bytes() == before
     qtbot.keyClick(window.editor, Qt.Key.Key_Z, CTRL)
     assert window.editor.networks[1].label == "Döngü_2"
+
+
+def test_monitoring_shows_the_values_beside_a_boxs_pins(qtbot: QtBot,
+                                                        window: MainWindow) -> None:
+    """On-line, the TON's ET shows the elapsed time as TIA spells it, beside the pin; the
+    constant PT shows none (the box says T#10s already)."""
+    from ladderworks.core.dialects.s7.devices import parse_absolute
+    from ladderworks.core.ladder.model import FunctionBox
+    from tests.gui.plc_docks_help import plc_docks
+
+    assert window.load(EXAMPLES / "s7" / "timers" / "Main.s7dcl")
+    docks = plc_docks(window)
+    docks.session.run.realtime = False
+    qtbot.keyClick(window, Qt.Key.Key_F9)
+    window.actions_by_name["action_plc_start"].trigger()
+    docks.online.actions["action_plc_online"].trigger()
+    assert docks.online.online
+    anchor, ton = next((c, e) for c, e in window.editor.networks[0].cells.items()
+                       if isinstance(e, FunctionBox))
+    docks.session.set_bit(parse_absolute("%I0.0")[0], 1)  # "Start"
+    docks.session.step(3000)
+    docks.online.live.update(docks.session.run.snapshot(), {})
+    shown = dict(zip([p.name for p in ton.named],
+                     docks.online.live.overlays[0].values[anchor], strict=True))
+    assert shown["PT"] == "" and (shown["ET"] == "T#3S" or shown["ET"].startswith("T#2S_9")), \
+        shown  # about 3 s (a scan or so late)
