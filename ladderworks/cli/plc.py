@@ -88,7 +88,8 @@ def _load_program_binary(name: str) -> bytes | None:
 
 def _load_program(name: str) -> tuple[bytes | None, Program | None]:
     """The binary of FILE and the program it was compiled from (None for a binary file)."""
-    data = Path(name).read_bytes()
+    path = Path(name)
+    data = path.read_bytes() if not path.is_dir() else b""  # a folder: an S7 export's
     if data.startswith(MAGIC):
         return data, None
     result = parsed(name)
@@ -152,7 +153,8 @@ def _symbols(name: str) -> SymbolTable | None:
 
 def dialect_of(name: str) -> str | None:
     """The dialect of program or binary FILE ("seed", "fanuc", "delta"), None if unreadable."""
-    data = Path(name).read_bytes()
+    path = Path(name)
+    data = path.read_bytes() if not path.is_dir() else b""  # a folder: an S7 export's
     if data.startswith(MAGIC):
         try:
             return decode(data).dialect

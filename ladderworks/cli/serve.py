@@ -8,12 +8,12 @@ import sys
 import threading
 
 from ladderworks.cli._programs import add_dialect_option
-from ladderworks.cli.plc import _load_program_binary, _parameters, _report
+from ladderworks.cli.plc import _load_program, _parameters, _report
 from ladderworks.core import dialects
 from ladderworks.core.compiler.binary import decode
 from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.modbus.bridge import PlcBridge
-from ladderworks.core.modbus.map_file import read_map
+from ladderworks.core.modbus.db_map import chosen_map
 from ladderworks.core.modbus.server import (
     DEFAULT_HOST,
     DEFAULT_PORT,
@@ -34,8 +34,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     serve.add_argument("--modbus", default=f"{DEFAULT_HOST}:{DEFAULT_PORT}", metavar="HOST:PORT",
                        help=f"where to listen (default {DEFAULT_HOST}:{DEFAULT_PORT}, this"
                        " computer only; 0.0.0.0:502 opens it to the network)")
-    serve.add_argument("--map", metavar="FILE",
-                       help="a CSV Modbus map replacing the dialect's (docs/modbus.md)")
+    serve.add_argument("--map", metavar="FILE|DB",
+                       help="a CSV Modbus map replacing the dialect's, or (S7) a global DB"
+                       " whose bytes are the holding registers (docs/modbus.md)")
     serve.add_argument("--scan-period", type=int, metavar="MS",
                        help=f"scan period in ms (default: the dialect's, {DEFAULT_PERIOD_MS} for"
                        " PMC programs)")
@@ -62,13 +63,18 @@ def _serve(args: argparse.Namespace) -> int:
         return _error(f"--modbus {error}")
     if args.scan_period is not None and args.scan_period <= 0:
         return _error("--scan-period must be at least 1 ms")
-    binary = _load_program_binary(args.file)
+    binary, program = _load_program(args.file)
     if binary is None:
         return 1
     dialect = decode(binary).dialect
     try:
-        own_map = read_map(args.map, dialect) if args.map else None
+        own_map = chosen_map(args.map or "", dialect,
+                             program.symbols if program is not None else None)
+    except OSError as error:
+        return _error(f"--map {args.map}: {error.strerror or error}")
     except DiagnosticError as error:
+        if all(d.line == 0 for d in error.diagnostics):  # not a file's line: a DB's name
+            return _error("--map " + "; ".join(d.message() for d in error.diagnostics))
         _report(args.map, error.diagnostics)
         return 2
     parameters = _parameters(args.file, args.params)

@@ -12,6 +12,7 @@ from ladderworks.core.address import Address, AddressError, looks_like_address
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.instructions import spec_for
 from ladderworks.core.symbols import SymbolTable, describe, resolve
+from ladderworks.core.tag_names import TagNames, network_titles
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 
 HEADERS = ("ADDRESS", "SYMBOL", "NETWORK", "LABEL", "UNIT", "LINE", "INSTRUCTION", "ELEMENT",
@@ -43,10 +44,20 @@ def element_text(use: Use) -> str:
     return f"{text} {use.parameter}" if use.parameter else text
 
 
-def use_row(use: Use, symbols: SymbolTable | None, dialect: str | None = None
-            ) -> tuple[str, ...]:
-    """One table row: the columns of HEADERS (a Delta program's in Delta's spelling)."""
+def use_row(use: Use, symbols: SymbolTable | None, dialect: str | None = None,
+            names: TagNames | None = None, titles: Sequence[str] = ()) -> tuple[str, ...]:
+    """One table row: the columns of HEADERS (a Delta program's in Delta's spelling; an S7
+    program's by tag, its network by the S7 network's title)."""
     spelled = spelling(dialect)
+    if names is not None and names.typed:
+        spec = spec_for(use.instruction)
+        named = names.name_of(use.address, use.width)
+        written = names.spelled(use.address, names.width_of(use.address, use.width)) or "-"
+        name = spelled.name(spec) if spec is not None else use.instruction
+        network = titles[use.network] if use.network < len(titles) else ""
+        return (written, named or "-", network or str(use.network + 1),
+                use.label or "-", use.unit or "-", str(use.line or "-"), name,
+                element_text(use), _ACCESS_TEXT[use.access])
     if spelled.dialect:
         spec = spec_for(use.instruction)
         written = spelled.address(use.address)
@@ -76,10 +87,13 @@ def _xref(args: argparse.Namespace) -> int:
     if program is None:
         return 1
     symbols = program.symbols
+    names = TagNames.of(program)
+    titles = network_titles(program) if names.typed else []
     queries: list[tuple[str, Address]] = []
     for text in args.addresses:
         try:
-            queries.append((text, dialects.parse_target(text, program.dialect)[0]
+            queries.append((text, names.resolve(text).address if names.typed
+                            else dialects.parse_target(text, program.dialect)[0]
                             if dialects.get(program.dialect) else resolve(text, symbols)))
         except AddressError as error:
             reason = (error.diagnostic.message() if looks_like_address(text)
@@ -88,18 +102,19 @@ def _xref(args: argparse.Namespace) -> int:
             return 2
     xref = CrossReference.from_program(program)
     if not queries:
-        sys.stdout.write(table([use_row(use, symbols, program.dialect)
-                                for use in xref.sorted_uses()]))
+        sys.stdout.write(table([use_row(use, symbols, program.dialect, names, titles)
+                                for use in xref.sorted_uses()
+                                if not names.internal(use.address)]))
         return 0
     rows: list[tuple[str, ...]] = []
     unused = False
     for text, address in queries:
-        uses = xref.uses_of(address)
+        uses = [use for use in xref.uses_of(address) if not names.internal(use.address)]
         if not uses:
             named = text if text == str(address) else f"{text} ({address})"
             print(f"ladderworks-cli xref: {named} is not used in {args.file}", file=sys.stderr)
             unused = True
-        rows += [use_row(use, symbols, program.dialect) for use in uses]
+        rows += [use_row(use, symbols, program.dialect, names, titles) for use in uses]
     if rows:
         sys.stdout.write(table(rows))
     return 1 if unused else 0

@@ -485,6 +485,9 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "'{text}' has characters a string cannot hold (only the Latin-1 set)"),
     "watch-string": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is longer than the string's {length} characters"),
+    "modbus-map-db": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{name}' is neither a map file nor a global DB of the program"
+        " (its global DBs: {names})"),
     # Siemens S7-1200 (docs/dialects.md, S7-1200)
     "s7-address": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag"),

@@ -56,8 +56,9 @@ class SymbolTable:
     by_symbol: dict[str, Address] = field(default_factory=dict)
     programs: dict[int, Symbol] = field(default_factory=dict)
     program_by_symbol: dict[str, int] = field(default_factory=dict)
-    # a symbol's data type as its program states it (an S7 tag's or member's: "Int", "Time")
-    types: dict[str, str] = field(default_factory=dict)
+    # a typed dialect's names (S7): symbol -> (its type as the vendor writes it, its bytes);
+    # a global DB's own name (`"DB_Modbus"`) is here with its whole size, not in by_symbol
+    types: dict[str, tuple[str, int]] = field(default_factory=dict)
 
     def __len__(self) -> int:
         return len(self.by_address) + len(self.programs)
@@ -94,12 +95,12 @@ class SymbolTable:
             found = next((a for s, a in self.by_symbol.items() if s.upper() == upper), None)
         return found
 
-    def type_of(self, symbol: str) -> str:
-        """The data type name a symbol's program gives it (exact, then case-insensitive), ""."""
+    def type_of(self, symbol: str) -> tuple[str, int] | None:
+        """(type name, bytes) of a typed name (exact, then case-insensitive), or None."""
         found = self.types.get(symbol)
-        if found is None:
+        if found is None and self.types:
             upper = symbol.upper()
-            found = next((t for s, t in self.types.items() if s.upper() == upper), "")
+            found = next((t for s, t in self.types.items() if s.upper() == upper), None)
         return found
 
     def program_symbol(self, number: int) -> str:

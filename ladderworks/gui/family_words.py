@@ -14,6 +14,7 @@ _EXAMPLES = {
     "": ("X21.7, R100, ESKIP", "R1.4 R1.7 D10:2", "R200"),
     "delta": ("X0, M100, T0, D10", "X0 Y0 T0 D10", "M200"),
     "fatek": ("X0, M100, T0, R10", "X0 Y0 T0 R10", "M200"),
+    "s7": ('"Start", %Q0.0, "Motor".Q', '"Start" %Q0.0 %MW2 "IEC_Timer_0_DB".ET', "%M20.0"),
 }
 
 

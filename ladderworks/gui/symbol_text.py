@@ -12,6 +12,7 @@ from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork, o
 from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
 from ladderworks.core.symbols import SymbolTable, describe
+from ladderworks.core.tag_names import names_for
 from ladderworks.gui.translation import ui_is_turkish
 
 
@@ -43,6 +44,12 @@ def program_name(address: Address, symbols: SymbolTable | None, dialect: str | N
 def tooltip(address: Address, symbols: SymbolTable | None, dialect: str | None = None) -> str:
     """Lines for a tooltip: `X21.7  ESKIP`, then the comment (or the signal's descriptions); in
     a program of a dialect its device (`X17`) and no FANUC signal."""
+    names = names_for(symbols, dialect)
+    if names.typed:  # S7: `%I0.0  "Start"`, a DB member by its name alone
+        lines = [f"{names.spelled(address)}  {names.name_of(address)}".strip()]
+        found = symbols.lookup(address) if symbols is not None else None
+        lines += [comment for comment in (found.comments if found is not None else ()) if comment]
+        return "\n".join(lines)
     lines = [dialects.format_address(address, dialect)]
     found = symbols.lookup(address) if symbols is not None else None
     if found is not None and found.symbol:

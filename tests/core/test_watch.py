@@ -260,7 +260,7 @@ def test_a_block_opened_alone_is_watched_by_its_interface() -> None:
 def test_a_64_bit_type_is_named_not_shown() -> None:
     symbols = SymbolTable()
     symbols.by_symbol['"Big"'] = Address(Area.D, 0)
-    symbols.types['"Big"'] = "LReal"
+    symbols.types['"Big"'] = ("LReal", 8)
     with pytest.raises(WatchError) as wide:
         resolve('"Big"', symbols, "s7")
     assert wide.value.code == "watch-wide"

@@ -50,7 +50,7 @@ def test_x12_and_g30_follow_inputs(qtbot: QtBot,
     session.run_scans(1)
     qtbot.waitUntil(lambda: x12.bit_texts() == "00001000")
     assert x12.hex_label.text() == "08h" and x12.dec_label.text() == "8"
-    assert [button.text() for button in reversed(x12.bits)] == list("00001000")
+    assert [button.text() for button in reversed(x12.shown_bits)] == list("00001000")
     seen = set()
     for position in range(8):
         switch(session, position)

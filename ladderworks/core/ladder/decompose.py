@@ -22,14 +22,13 @@ from ladderworks.core.ladder.logic import (
     Logic,
     Output,
     Rung,
-    Undrawable,
     code_rung,
     inverted_inside,
     outputs_first,
-    read_rung,
     stack_row,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.reading import Undrawable, read_rung
 from ladderworks.core.ladder.row_contacts import contact_combine
 
 

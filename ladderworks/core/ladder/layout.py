@@ -12,10 +12,8 @@ from ladderworks.core.ladder.logic import (
     Output,
     Rung,
     Series,
-    Undrawable,
     code_rung,
     has_bare_branch,
-    read_rung,
 )
 from ladderworks.core.ladder.model import (
     BOX_WIDTH,
@@ -26,6 +24,7 @@ from ladderworks.core.ladder.model import (
     FunctionBox,
     LadderNetwork,
 )
+from ladderworks.core.ladder.reading import Undrawable, read_rung
 
 
 def size(logic: Logic) -> tuple[int, int]:

@@ -144,10 +144,12 @@ class PlcBridge:
                         values.extend(data[b] | data[b + 1] << 8
                                       for b in range(low, low + 2 * taken, 2))
                     continue
+                big = self.plc.memory.byteorder == "big"  # S7: %MW0 is %MB0 (high), %MB1
                 for index in range(first, first + taken):
                     word = cells.register(row, index)
                     data = areas[word.area]
-                    values.append(data[word.byte] | data[word.byte + 1] << 8)
+                    low, high = data[word.byte], data[word.byte + 1]
+                    values.append(low << 8 | high if big else low | high << 8)
         return values
 
     def write_registers(self, table: Table, address: int, values: Sequence[int]) -> None:
@@ -175,10 +177,11 @@ class PlcBridge:
         """One register: bit by bit where the machine side holds a forced bit, else whole."""
         if address.area in MACHINE_AREAS and any(
                 address.offset(k).with_bit(b) in forced for k in range(width) for b in range(8)):
+            data = value.to_bytes(width, self.plc.memory.byteorder)
             for k in range(width):
                 byte = address.offset(k)
                 for bit in range(8):
-                    self.plc.set_bit(byte.with_bit(bit), value >> (8 * k + bit) & 1)
+                    self.plc.set_bit(byte.with_bit(bit), data[k] >> bit & 1)
         else:
             self.plc.write(address, value, width)
 

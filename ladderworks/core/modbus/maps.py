@@ -182,9 +182,22 @@ FATEK_MAP = ModbusMap("fatek", _rows(
     ("holding", 9700, 112, "C200", "rw", 2),  # C200-C255: 32-bit, low word first
 ))
 
+# Siemens S7-1200 as its MB_SERVER instruction serves it (S7-1200 system manual, MB_SERVER:
+# coils 00001-08192 the process image outputs %Q0.0-%Q1023.7, discrete inputs 10001-18192 the
+# inputs %I0.0-%I1023.7, input registers 30001-30512 %IW0-%IW1022, holding registers 40001-
+# where MB_HOLD_REG points: here its usual setup, the bit memory, register n = %MW(2n)),
+# 0-based. Coils 10000-18191 driving %I are LadderWorks' own addition (docs/modbus.md).
+S7_MAP = ModbusMap("s7", _rows(
+    ("coils", 0, 8192, "%Q0.0", "rw"),
+    ("coils", 10000, 8192, "%I0.0", "rw"),
+    ("discrete", 0, 8192, "%I0.0", "r"),
+    ("holding", 0, 4096, "%MW0", "rw", 2),
+    ("input", 0, 512, "%IW0", "r", 2),
+))
+
 # The default map of each dialect (the program's `dialect`).
 DEFAULT_MAPS: dict[str, ModbusMap] = {
-    "seed": PMC_MAP, "fanuc": PMC_MAP, "delta": DELTA_MAP, "fatek": FATEK_MAP,
+    "seed": PMC_MAP, "fanuc": PMC_MAP, "delta": DELTA_MAP, "fatek": FATEK_MAP, "s7": S7_MAP,
 }
 
 

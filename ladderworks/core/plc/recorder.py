@@ -12,6 +12,7 @@ from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.plc.scenario import HEADER
 from ladderworks.core.plc.session import PlcRun
+from ladderworks.core.tag_names import names_for
 
 _TYPES = {1: "BYTE", 2: "WORD", 4: "DWORD"}
 
@@ -80,6 +81,18 @@ class ScenarioRecorder:
         """The scenario: one line per change, then an EXPECT of each (address, width) given
         (default: every Y byte that is not 0 at the end) at the last scan recorded."""
         spelled = spelling(self.plc.program_dialect)  # a Delta program: X10, D0
+        program = self.plc.program
+        names = names_for(program.symbols if program is not None else None,
+                          self.plc.program_dialect)
+
+        def spell(address: Address, width: int = 1) -> str:
+            """An S7 program's place by its tag (`"Start"`) when it has one of that width."""
+            name = names.name_of(address, width) if names.typed else ""
+            kind = names.symbols.type_of(name) if name and names.symbols is not None else None
+            fits = name and "," not in name and (address.bit is not None
+                                                  or (kind is not None and kind[1] == width))
+            return name if fits else spelled.address(address)
+
         lines = [HEADER]
         if self.program is not None:
             lines.append(f"PROGRAM,{Path(os.path.abspath(self.program)).as_posix()}")
@@ -88,8 +101,9 @@ class ScenarioRecorder:
         last = self.start_ms
         for event in self.events:
             wait = max(event.time_ms - last, 0)
-            lines.append(",".join([_COMMANDS[event.kind], str(wait),
-                                   *event.fields(spelled.address)]))
+            width = event.width
+            lines.append(",".join([_COMMANDS[event.kind], str(wait), *event.fields(
+                lambda address: spell(address, width))]))  # noqa: B023 (called at once)
             last = event.time_ms
         end = self.end_ms if self.end_ms is not None else self._now()
         period = self.plc.period_ms if self.plc.engine is None else self.plc.engine.period_ms
@@ -102,7 +116,7 @@ class ScenarioRecorder:
                          else self.plc.read(address, width))
                 kind = ",BIT" if address.bit is not None and spelled.dialect else \
                     "" if address.bit is not None else "," + _TYPES.get(width, "BYTE")
-                lines.append(f"EXPECT,{wait},{spelled.address(address)},{value}{kind}")
+                lines.append(f"EXPECT,{wait},{spell(address, width)},{value}{kind}")
                 wait = 0
         return "\n".join(lines) + "\n"
 

@@ -22,11 +22,16 @@ from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.il.textform import split_lines
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.core.symbols import SymbolTable, resolve
+from ladderworks.core.tag_names import meaning, names_for, typed_text, typed_value
 
 HEADER = "PMC SIGNAL DATA"
-# TYPE column: the width in bytes (0: a bit)
+# TYPE column: the width in bytes (0: a bit); REAL and TIME are 4 bytes read as their type
 TYPES: dict[str, int] = {"BIT": 0, "B": 1, "BYTE": 1, "1": 1, "WORD": 2, "W": 2, "2": 2,
-                         "DWORD": 4, "D": 4, "4": 4}
+                         "DWORD": 4, "D": 4, "4": 4, "REAL": 4, "TIME": 4}
+# EXPECT / WAITFOR: a VALUE may start with a comparison (`>=T#5s`); "=" without one
+COMPARISONS: dict[str, Callable[[float, float], bool]] = {
+    ">=": lambda a, b: a >= b, "<=": lambda a, b: a <= b, "<>": lambda a, b: a != b,
+    ">": lambda a, b: a > b, "<": lambda a, b: a < b, "=": lambda a, b: a == b}
 COMMANDS = {"S": "SET", "SET": "SET", "R": "REMARK", "REMARK": "REMARK",
             "E": "EXPECT", "EXPECT": "EXPECT", "W": "WAITFOR", "WAITFOR": "WAITFOR",
             "FORCE": "FORCE", "RELEASE": "RELEASE", "PROGRAM": "PROGRAM"}
@@ -38,6 +43,11 @@ class Target:
     text: str
     address: Address
     width: int = 1
+    type_name: str = ""  # an S7 tag's type (`Time`, `Real`, `Int`): its values typed as such
+
+    def shown(self, value: int) -> str:
+        """A value as the file would type it (`T#5s`, `21.5`, `-3`; else the number)."""
+        return typed_text(value, self.type_name, self.width) or str(value)
 
     def read(self, plc: PlcRun) -> int:
         """The value now."""
@@ -61,6 +71,13 @@ class Step:
     command: str
     wait_ms: int
     items: tuple[tuple[Target, int], ...] = ()
+    compare: str = "="  # a check's comparison (COMPARISONS)
+
+    def holds(self, got: int) -> bool:
+        """True when a check's value `got` compares as the line asks with its VALUE."""
+        target, expected = self.items[0]
+        return COMPARISONS[self.compare](meaning(got, target.type_name, target.width),
+                                         meaning(expected, target.type_name, target.width))
 
 
 @dataclass(slots=True)
@@ -103,13 +120,16 @@ class CheckResult:
     got: int
     time_ms: int
     passed: bool
+    shown: tuple[str, ...] = ()  # typed: (comparison, expected, got) as the file types
 
     def message(self, name: str) -> str:
-        """`SCENARIO:LINE: expected ADDR=V, got W at T ms` (or `... passed`)."""
+        """`SCENARIO:LINE: expected ADDR=V, got W at T ms` (or `... passed`); a typed check's
+        values as typed (`expected "T1".ET>=T#5s, got T#4s990ms`)."""
+        op, expected, got = self.shown or ("=", str(self.expected), str(self.got))
         if self.passed:
-            return f"{name}:{self.line}: {self.target}={self.expected} at {self.time_ms} ms"
-        return (f"{name}:{self.line}: expected {self.target}={self.expected}, "
-                f"got {self.got} at {self.time_ms} ms")
+            return f"{name}:{self.line}: {self.target}{op}{expected} at {self.time_ms} ms"
+        return (f"{name}:{self.line}: expected {self.target}{op}{expected}, "
+                f"got {got} at {self.time_ms} ms")
 
 
 @dataclass(slots=True)
@@ -175,6 +195,16 @@ class _Reader:
         if width == -1:
             self.error("scenario-type", line, column + 2, text=type_text)
             return None
+        type_name = type_text.strip().upper() if type_text.strip().upper() in ("REAL", "TIME") \
+            else ""
+        names = names_for(self.symbols, self.dialect)
+        if names.typed and width is None:  # an S7 tag: its type's width and meaning
+            try:
+                named = names.resolve(text)
+            except AddressError:
+                self.error("scenario-address", line, column, text=text)
+                return None
+            return Target(text.strip(), named.address, named.width, named.type_name)
         try:
             if dialects.get(self.dialect) is not None:
                 want = None if width is None else "bit" if width == 0 else "word"
@@ -188,9 +218,12 @@ class _Reader:
             return None
         if address.bit is not None:
             return Target(text.strip(), address, 1)
-        return Target(text.strip(), address, width or 1)
+        return Target(text.strip(), address, width or 1, type_name)
 
     def value(self, text: str, target: Target, line: int, column: int) -> int | None:
+        typed = typed_value(text, target.type_name, target.width)
+        if typed is not None:
+            return typed
         try:
             value = _number(text)
         except ValueError:
@@ -292,6 +325,10 @@ def parse_scenario(text: str, name: str = "scenario",
                          expected=_NEEDS[command])
             continue
         wait = reader.wait(fields[1], number)
+        compare = next((op for op in COMPARISONS if fields[3].startswith(op)), "=") \
+            if command in CHECKS else "="
+        if command in CHECKS and fields[3].startswith(compare):
+            fields[3] = fields[3][len(compare):].strip()
         items = reader.items(fields[2:], number, 3)
         if items is None or (command != "SET" and len(items) > 1):
             reader.error("scenario-fields", number, 3, command=command,
@@ -302,7 +339,7 @@ def parse_scenario(text: str, name: str = "scenario",
         if command in ("FORCE", "RELEASE") and items[0][0].address.bit is None:
             reader.error("scenario-bit", number, 3, text=items[0][0].text)
             continue
-        scenario.steps.append(Step(number, command, wait, tuple(items)))
+        scenario.steps.append(Step(number, command, wait, tuple(items), compare))
     scenario.diagnostics = reader.diagnostics
     return scenario
 
@@ -327,6 +364,15 @@ def rounded(wait_ms: int, period_ms: int) -> int:
 
 
 CheckListener = Callable[[CheckResult], None]
+CHECKS = ("EXPECT", "WAITFOR")
+
+
+def _shown(step: Step, got: int) -> tuple[str, ...]:
+    """A typed check's (comparison, expected, got) as the file types them; () when plain."""
+    target, expected = step.items[0]
+    if not target.type_name and step.compare == "=":
+        return ()
+    return step.compare, target.shown(expected), target.shown(got)
 
 
 def run_scenario(plc: PlcRun, scenario: Scenario,
@@ -369,17 +415,17 @@ def run_scenario(plc: PlcRun, scenario: Scenario,
                 run_before(at + 1)
                 got = target.read(plc)
                 check = CheckResult(step.line, step.command, target.text, expected, got,
-                                    at - start_ms, got == expected)
+                                    at - start_ms, step.holds(got), _shown(step, got))
             else:
                 run_before(at + 1)
                 got = target.read(plc)
-                if got != expected:  # the scans while the one before was before the timeout
+                if not step.holds(got):  # the scans while the one before was before the timeout
                     run_before(target_time + period,
-                               lambda: target.read(plc) == expected)  # noqa: B023
+                               lambda: step.holds(target.read(plc)))  # noqa: B023
                     got = target.read(plc)
                 at = seen = engine.now_ms - period
                 check = CheckResult(step.line, step.command, target.text, expected, got,
-                                    seen - start_ms, got == expected)
+                                    seen - start_ms, step.holds(got), _shown(step, got))
             result.checks.append(check)
             if on_check is not None:
                 on_check(check)

@@ -95,7 +95,9 @@ def resolve(text: str, symbols: SymbolTable | None, dialect: str | None) -> Watc
         found = _symbol(typed, symbols)
         if found is not None:
             name, address = found
-            type_name = symbols.type_of(name)
+            typed_as = next((found for found in (symbols.type_of(form) for form in (
+                name, f'"{name}"', f"#{name}")) if found is not None), None)
+            type_name = typed_as[0] if typed_as is not None else ""
             width = type_width(type_name) if type_name else None
             if type_name.strip().lower() in WIDE_TYPES:
                 raise WatchError("watch-wide", text=typed, type=type_name)

@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 from ladderworks.core import dialects
 from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
 from ladderworks.core.plc.forcing import ForceEntry
+from ladderworks.core.tag_names import TagNames, names_for
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
@@ -30,6 +31,8 @@ from ladderworks.gui.symbol_text import tooltip
 translate = QCoreApplication.translate
 
 BOX_COUNT = 8
+MAX_TEXT = 64  # characters of a box: an S7 tag's name (`"IEC_Timer_0_DB".Q`)
+NAMED_WIDTH = 160  # pixels of a box in a program named by tags
 _ON = "background:#2e9e44;color:white;"
 _OFF = "background:#e4e4e4;color:#555;"
 _FORCED = "border:2px solid #e07000;font-weight:bold;"
@@ -61,19 +64,22 @@ class BitButton(QToolButton):
 
 
 class BitRow:
-    """One box: the address typed, its 8 bit buttons, hex and decimal, and its error text."""
+    """One box: the address typed, its 8 bit buttons (16 for a word: an S7 `%MW2` or Int tag),
+    hex and decimal, and its error text."""
 
     def __init__(self, dock: BitDisplayDock, index: int, grid: QGridLayout) -> None:
         parent = grid.parentWidget()
         self.index = index
         self.address: Address | None = None
         self.value: int | None = None
+        self.width = 1  # bytes shown: 1, or 2 for a word
+        self.signed = False  # an Int tag's decimal is signed
         self.edit = QLineEdit(parent)
         self.edit.setObjectName(f"bitDisplayAddress_{index}")
-        self.edit.setMaxLength(8)
+        self.edit.setMaxLength(MAX_TEXT)
         self.edit.setFixedWidth(72)
         self.edit.editingFinished.connect(lambda: dock.apply_row(self))
-        self.bits = [BitButton(index, bit, parent) for bit in range(8)]
+        self.bits = [BitButton(index, bit, parent) for bit in range(16)]
         for bit_button in self.bits:
             bit_button.clicked.connect(lambda _c=False, b=bit_button: dock.toggle_bit(b))
             bit_button.customContextMenuRequested.connect(
@@ -92,22 +98,29 @@ class BitRow:
         self.error.hide()
         row = index + 1
         grid.addWidget(self.edit, row, 0)
-        for position, bit_button in enumerate(reversed(self.bits)):  # bit 7 on the left
-            grid.addWidget(bit_button, row, 1 + position)
-        grid.addWidget(self.hex_label, row, 9)
-        grid.addWidget(self.dec_label, row, 10)
-        grid.addWidget(self.error, row, 1, 1, 10)
+        for bit_button in self.bits:  # bit 15 (a word's) on the left, then bit 7 … 0
+            grid.addWidget(bit_button, row, 16 - bit_button.bit)
+            bit_button.setVisible(bit_button.bit < 8)
+        grid.addWidget(self.hex_label, row, 17)
+        grid.addWidget(self.dec_label, row, 18)
+        grid.addWidget(self.error, row, 1, 1, 18)
+
+    @property
+    def shown_bits(self) -> list[BitButton]:
+        """The buttons of the bits shown: 8, or 16 for a word."""
+        return self.bits[:8 * self.width]
 
     def set_error(self, text: str) -> None:
         """Show `text` in place of the bits ('' hides the error and shows the bits)."""
         self.error.setText(text)
         self.error.setVisible(bool(text))
         for widget in (*self.bits, self.hex_label, self.dec_label):
-            widget.setVisible(not text)
+            widget.setVisible(not text and (not isinstance(widget, BitButton)
+                                            or widget.bit < 8 * self.width))
 
     def bit_texts(self) -> str:
         """The bits shown, bit 7 first (`01000100`), or '' when nothing is shown."""
-        return "" if self.value is None else f"{self.value:08b}"
+        return "" if self.value is None else f"{self.value:0{8 * self.width}b}"
 
 
 class BitDisplayDock(Retranslating, QDockWidget):
@@ -141,19 +154,21 @@ class BitDisplayDock(Retranslating, QDockWidget):
         grid_holder = QWidget(body)
         grid = QGridLayout(grid_holder)
         grid.setHorizontalSpacing(3)
-        self.headers: list[QLabel] = []
+        self.headers: list[QLabel] = []  # bit 0 … 15
         self.address_header = QLabel(grid_holder)
         grid.addWidget(self.address_header, 0, 0)
-        for position in range(8):
-            label = QLabel(str(7 - position), grid_holder)
+        for bit in range(16):
+            label = QLabel(str(bit), grid_holder)
             label.setAlignment(Qt.AlignmentFlag.AlignCenter)
-            grid.addWidget(label, 0, 1 + position)
+            label.setVisible(bit < 8)
+            grid.addWidget(label, 0, 16 - bit)
+            self.headers.append(label)
         self.hex_header = QLabel(grid_holder)
         self.dec_header = QLabel(grid_holder)
-        grid.addWidget(self.hex_header, 0, 9)
-        grid.addWidget(self.dec_header, 0, 10)
+        grid.addWidget(self.hex_header, 0, 17)
+        grid.addWidget(self.dec_header, 0, 18)
         self.rows = [BitRow(self, index, grid) for index in range(BOX_COUNT)]
-        grid.setColumnStretch(11, 1)
+        grid.setColumnStretch(19, 1)
         grid.setRowStretch(BOX_COUNT + 1, 1)  # a tall dock: the room below the boxes
         self._scroll = scroll = QScrollArea(body)
         scroll.setWidgetResizable(True)
@@ -164,7 +179,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
         session.snapshot_ready.connect(self.gate.offer)
         self.visibilityChanged.connect(lambda _shown: self.gate.flush())
         session.forces_changed.connect(self._on_forces)
-        session.symbols_changed.connect(lambda _symbols: self._refresh_tooltips())
+        session.symbols_changed.connect(lambda _symbols: self.retranslate())  # S7: tag texts
         self._on_forces(session.run.forces())
         self.retranslate()
 
@@ -208,9 +223,15 @@ class BitDisplayDock(Retranslating, QDockWidget):
         text = row.edit.text().strip()
         row.address = None
         row.value = None
+        row.width, row.signed = 1, False
+        names = names_for(self.session.symbols, self.session.run.program_dialect)
+        row.edit.setFixedWidth(NAMED_WIDTH if names.typed else 72)
         if not text:
             row.set_error("")
             self._show_row(row, None)
+            return
+        if names.typed:  # S7: a tag or an absolute address, a word shown whole
+            self._parse_named(row, names, text)
             return
         try:
             if dialects.get(self.session.run.program_dialect) is not None:  # Delta: M0 shows M0..M7
@@ -231,6 +252,40 @@ class BitDisplayDock(Retranslating, QDockWidget):
         row.set_error("")
         self._set_tooltips(row)
 
+    def _parse_named(self, row: BitRow, names: TagNames, text: str) -> None:
+        """A box of an S7 program: `"Start"` (its byte), `%MW2` or an Int tag (a word)."""
+        try:
+            named = names.resolve(text)
+        except AddressError as error:
+            row.set_error(diagnostic_text(error.diagnostic))
+            self._show_row(row, None)
+            return
+        if named.address.bit is None and named.width > 2:
+            row.set_error(translate("BitDisplay", "{0} has {1} bytes: a box shows a byte or a"
+                                    " word (the time chart shows any value)").format(
+                                        named.text, named.width))
+            self._show_row(row, None)
+            return
+        row.address = Address(named.address.area, named.address.byte)
+        row.width = 2 if named.address.bit is None and named.width == 2 else 1
+        row.signed = named.type_name.lower() in ("int", "sint")
+        row.edit.setText(named.text)
+        row.set_error("")
+        self._set_tooltips(row)
+        for header in self.headers[8:]:
+            header.setVisible(any(r.width == 2 for r in self.rows))
+        self._fit_width()  # a word's 8 more bits
+
+    def bit_of(self, row: BitRow, bit: int) -> Address | None:
+        """The address of bit `bit` of a row (of a word: its byte in the memory's order)."""
+        if row.address is None:
+            return None
+        if row.width == 1:
+            return row.address.with_bit(bit)
+        high_first = self.session.run.memory.byteorder == "big"
+        byte = row.address.byte + ((bit < 8) if high_first else (bit >= 8))
+        return Address(row.address.area, byte, bit % 8)
+
     # -- showing ---------------------------------------------------------------------------
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
@@ -241,13 +296,17 @@ class BitDisplayDock(Retranslating, QDockWidget):
 
     def _show_row(self, row: BitRow, snapshot: PlcSnapshot | None) -> None:
         address = row.address
-        value = snapshot.read(address) if address is not None and snapshot is not None else None
+        value = (snapshot.read(address, row.width) if address is not None and snapshot is not None
+                 else None)
         row.value = value
-        for button in row.bits:
-            forced = self._forced.get(address.with_bit(button.bit)) if address is not None else None
+        for button in row.shown_bits:
+            bit = self.bit_of(row, button.bit)
+            forced = self._forced.get(bit) if bit is not None else None
             button.show_value(None if value is None else value >> button.bit & 1, forced)
-        row.hex_label.setText("" if value is None else f"{value:02X}h")
-        row.dec_label.setText("" if value is None else str(value))
+        row.hex_label.setText("" if value is None else f"{value:0{2 * row.width}X}h")
+        top = 1 << (8 * row.width)
+        shown = value - top if value is not None and row.signed and value >= top >> 1 else value
+        row.dec_label.setText("" if shown is None else str(shown))
 
     def _on_forces(self, entries: list[ForceEntry]) -> None:
         self._forced = {
@@ -258,9 +317,10 @@ class BitDisplayDock(Retranslating, QDockWidget):
         for row in self.rows:
             if row.address is not None:
                 self._set_tooltips(row)
-                for button in row.bits:
+                for button in row.shown_bits:
                     value = None if row.value is None else row.value >> button.bit & 1
-                    button.show_value(value, self._forced.get(row.address.with_bit(button.bit)))
+                    bit = self.bit_of(row, button.bit)
+                    button.show_value(value, self._forced.get(bit) if bit is not None else None)
 
     def _refresh_tooltips(self) -> None:
         for row in self.rows:
@@ -268,9 +328,8 @@ class BitDisplayDock(Retranslating, QDockWidget):
 
     def _set_tooltips(self, row: BitRow) -> None:
         for button in row.bits:
-            button.setToolTip(
-                "" if row.address is None else self.bit_tooltip(row.address.with_bit(button.bit))
-            )
+            bit = self.bit_of(row, button.bit) if button.bit < 8 * row.width else None
+            button.setToolTip("" if bit is None else self.bit_tooltip(bit))
 
     def bit_tooltip(self, address: Address) -> str:
         """The signal name and descriptions of a bit, whether it can be forced, and its force."""
@@ -287,10 +346,10 @@ class BitDisplayDock(Retranslating, QDockWidget):
     # -- forcing ---------------------------------------------------------------------------
 
     def _bit_address(self, button: BitButton) -> Address | None:
-        address = self.rows[button.row].address
+        address = self.bit_of(self.rows[button.row], button.bit)
         if address is None or address.area not in INPUT_AREAS:
             return None
-        return address.with_bit(button.bit)
+        return address
 
     def toggle_bit(self, button: BitButton) -> None:
         """Force an input bit to the value other than the one it has (or is forced to)."""
@@ -349,11 +408,14 @@ class BitDisplayDock(Retranslating, QDockWidget):
         self.setWindowTitle(translate("BitDisplay", "PLC bit display"))
         self.start_button.setText(translate("BitDisplay", "START"))
         self.stop_button.setText(translate("BitDisplay", "STOP"))
-        self.address_header.setText(translate("BitDisplay", "Byte"))
+        typed = names_for(self.session.symbols, self.session.run.program_dialect).typed
+        self.address_header.setText(translate("BitDisplay", "Tag or address") if typed
+                                    else translate("BitDisplay", "Byte"))
         self.hex_header.setText(translate("BitDisplay", "Hex"))
         self.dec_header.setText(translate("BitDisplay", "Dec"))
         for row in self.rows:
-            row.edit.setPlaceholderText(translate("BitDisplay", "e.g. X12"))
+            row.edit.setPlaceholderText(translate("BitDisplay", "e.g. \"Start\", %MW2") if typed
+                                        else translate("BitDisplay", "e.g. X12"))
             if row.edit.text().strip():
                 self._parse(row)
                 if self.live:

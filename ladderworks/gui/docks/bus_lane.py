@@ -5,6 +5,8 @@ from __future__ import annotations
 import pyqtgraph as pg
 from PySide6.QtGui import QColor, QFontMetrics
 
+from ladderworks.core.tag_names import typed_text
+
 BAND_LOW = 0.1  # the band spans these fractions of a lane's 0..1 height
 BAND_HIGH = 0.9
 SLANT_PX = 3  # the band's crossing at a change, in pixels either side
@@ -19,8 +21,10 @@ def value_text(value: int, width: int) -> str:
 class BusLane:
     """The band and value texts of one value lane, redrawn from the lane's steps."""
 
-    def __init__(self, item: pg.PlotItem, colour: QColor, base: float, width: int) -> None:
+    def __init__(self, item: pg.PlotItem, colour: QColor, base: float, width: int,
+                 type_name: str = "") -> None:
         self.item = item
+        self.type_name = type_name  # an S7 tag's type: a Time as T#5s, a Real as 21.5
         self.colour = colour
         self.base = base
         self.width = width
@@ -87,7 +91,8 @@ class BusLane:
         tall_enough = band >= 0.8 * metrics.height()  # a crowded chart: the readout has them
         for (start, end), value, label in zip(self.spans, self.values, self.labels, strict=True):
             room = (end - start) / per_pixel - 2 * SLANT_PX - margin if tall_enough else 0
-            full, short = value_text(value, self.width), str(value)
+            typed = typed_text(value, self.type_name, self.width)
+            full, short = (typed, typed) if typed else (value_text(value, self.width), str(value))
             text = full if metrics.horizontalAdvance(full) <= room else short
             label.setText(text)
             label.setVisible(metrics.horizontalAdvance(text) <= room)

@@ -35,6 +35,7 @@ from ladderworks.core.dialects.spelling import Spelling, spelling
 from ladderworks.core.instructions import spec_for
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, resolve
+from ladderworks.core.tag_names import TagNames, names_for
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.diagnostic_texts import diagnostic_text
@@ -106,6 +107,8 @@ class CrossReferenceModel(QAbstractTableModel):
         self.uses: list[Use] = []
         self.symbols: SymbolTable | None = None
         self.spelled = spelling(None)  # the program's dialect's spelling (set by the dock)
+        self.names = TagNames(None, None)  # an S7 program's tags (set by the dock)
+        self.titles: list[str] = []  # the S7 network title of each network
 
     def show(self, uses: list[Use], symbols: SymbolTable | None) -> None:
         """Replace the rows."""
@@ -140,6 +143,8 @@ class CrossReferenceModel(QAbstractTableModel):
             return None
         use = self.uses[index.row()]
         column = index.column()
+        if self.names.typed and column in (0, 1, 2, 7):
+            return self._named(use, column)
         if column == 0:
             if self.spelled.dialect:  # a Delta program: its device (`D500`, `T0`)
                 return self.spelled.address(use.address)
@@ -160,6 +165,32 @@ class CrossReferenceModel(QAbstractTableModel):
         if column == 5:
             return kind_text(use, self.spelled)
         return access_text(use.access)
+
+    def _named(self, use: Use, column: int) -> str:
+        """An S7 program's address (`%MW10`, "" for a DB member), tag, network title and the
+        tag's comment."""
+        names = self.names
+        if column == 0:
+            return names.spelled(use.address, names.width_of(use.address, use.width))
+        if column == 1:
+            return names.name_of(use.address, use.width)
+        if column == 2:  # the S7 network's title (`Network 3` when it has none)
+            title = self.titles[use.network] if use.network < len(self.titles) else ""
+            return title or str(use.network + 1)
+        found = self.symbols.lookup(use.address) if self.symbols is not None else None
+        return use.comment or (found.comment if found is not None else "")
+
+
+def ladder_titles(networks: Sequence[LadderNetwork]) -> list[str]:
+    """The source network title each console network belongs to (its first comment line,
+    carried on until the next network with comments)."""
+    titles: list[str] = []
+    current = ""
+    for network in networks:
+        if network.comments:
+            current = network.comments[0]
+        titles.append(current)
+    return titles
 
 
 FIT_ROWS = 200  # rows measured to fit the columns to their contents
@@ -251,17 +282,21 @@ class CrossReferenceDock(Retranslating, QDockWidget):
         text = self.query.text().strip()
         symbols = self.source.symbols()
         self.model.spelled = spelling(self.source.dialect())
+        names = self.model.names = names_for(symbols, self.source.dialect())
+        self.model.titles = ladder_titles(self.source.networks()) if names.typed else []
         self.query.setPlaceholderText(xref_example(self.source.dialect()))
         if not text:
             xref = self.cross_reference()
-            self.model.show(xref.sorted_uses(), symbols)
+            shown = [use for use in xref.sorted_uses() if not names.internal(use.address)]
+            self.model.show(shown, symbols)
             self.summary.setText(translate("CrossReference", "All addresses — uses: {0}").format(
-                len(xref)))
+                len(shown)))
             self._fit_columns()
             return
         try:
             dialect = self.source.dialect()
-            address = (dialects.parse_target(text, dialect)[0] if dialects.get(dialect)
+            address = (names.resolve(text).address if names.typed
+                       else dialects.parse_target(text, dialect)[0] if dialects.get(dialect)
                        else resolve(text, symbols))
         except AddressError as error:
             self.model.show([], symbols)
@@ -271,13 +306,17 @@ class CrossReferenceDock(Retranslating, QDockWidget):
                                "'{0}' is neither an address nor a symbol of the program").format(
                                    text))
             return
-        uses = self.cross_reference().uses_of(address)
+        uses = [use for use in self.cross_reference().uses_of(address)
+                if not names.internal(use.address) and not (  # a tag: its own bit's uses
+                    names.typed and address.bit is not None and use.address.bit is not None
+                    and use.address != address)]
         self.model.show(uses, symbols)
         self.summary.setText(self._summary_text(address, uses))
         self._fit_columns()
 
     def _summary_text(self, address: Address, uses: list[Use]) -> str:
-        written = self.model.spelled.address(address)  # a Delta T0, not T1000.0
+        written = (self.model.names.shown(address) if self.model.names.typed
+                   else self.model.spelled.address(address))  # a Delta T0, not T1000.0
         if not uses:
             return translate("CrossReference", "{0} is not used in the program").format(written)
         reads = sum(1 for u in uses if u.access is not Access.WRITE)

@@ -27,6 +27,7 @@ from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.symbols import SymbolTable
+from ladderworks.core.tag_names import names_for
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.diagnostic_items import YieldingNetworkItem
 from ladderworks.gui.docks.live_ladder import LivePower
@@ -171,9 +172,14 @@ class DiagnosticView(QGraphicsView):
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
         """(symbol, comment) of the program, else (signal name, description) of the manual
-        (a Delta program's addresses are no FANUC signals: none)."""
+        (a Delta program's addresses are no FANUC signals: none; an S7 program's: its tag)."""
         if self.spelling.dialect:
-            return None
+            names = names_for(self.symbols, self.spelling.dialect)
+            name = names.name_of(address) if isinstance(address, Address) else ""
+            if not name or not isinstance(address, Address):
+                return None
+            found = self.symbols.lookup(address) if self.symbols is not None else None
+            return name, found.comment if found is not None else ""
         return name_and_text(address, self.symbols)
 
     def commented(self, network: LadderNetwork) -> bool:

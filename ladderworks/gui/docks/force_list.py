@@ -1,4 +1,5 @@
-"""The force list: every forced signal and passive (disabled) element, released with one click."""
+"""The force list: every forced signal and passive (disabled) element, released with one click;
+a bit forced by its address or name (an S7 tag `"Start"`, `"Motor".Q`) typed over the list."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QHeaderView,
     QLabel,
+    QLineEdit,
     QPushButton,
     QTableWidget,
     QTableWidgetItem,
@@ -15,9 +17,14 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
+from ladderworks.core.address import Address, AddressError
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.plc.forcing import ForceEntry
+from ladderworks.core.symbols import resolve
+from ladderworks.core.tag_names import names_for, network_titles
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
@@ -36,6 +43,21 @@ class ForceListDock(Retranslating, QDockWidget):
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
+        top = QHBoxLayout()
+        self.target_label = QLabel(body)
+        self.target = QLineEdit(body)  # a bit by address or name, forced by the buttons
+        self.target.setObjectName("forceListTarget")
+        self.target_label.setBuddy(self.target)
+        self.force_buttons = []
+        top.addWidget(self.target_label)
+        top.addWidget(self.target, 1)
+        for value in (1, 0):
+            button = QPushButton(body)
+            button.setObjectName(f"forceListForce{value}")
+            button.clicked.connect(lambda _checked=False, v=value: self.force_typed(v))
+            top.addWidget(button)
+            self.force_buttons.append(button)
+        layout.addLayout(top)
         self.table = QTableWidget(0, 4, body)
         self.table.setObjectName("forceListTable")
         self.table.verticalHeader().hide()
@@ -74,11 +96,49 @@ class ForceListDock(Retranslating, QDockWidget):
             translate("ForceList", "Value"), ""])
         fit_headers(self.table)
         self.release_all_button.setText(translate("ForceList", "Release all"))
+        self.target_label.setText(translate("ForceList", "&Bit:"))
+        self.target.setPlaceholderText(translate("ForceList", "an address or a tag"))
+        self.force_buttons[0].setText(translate("ForceList", "Force to 1"))
+        self.force_buttons[1].setText(translate("ForceList", "Force to 0"))
         self.show_entries(self.entries)
+
+    def typed_bit(self) -> Address | None:
+        """The bit typed over the list (its address or name), None with the reason shown."""
+        text = self.target.text().strip()
+        dialect = self.session.run.program_dialect
+        names = names_for(self.session.symbols, dialect)
+        try:
+            address = (names.resolve(text).address if names.typed
+                       else dialects.parse_target(text, dialect, "bit")[0]
+                       if dialects.get(dialect) else resolve(text, self.session.symbols))
+        except AddressError as error:
+            self.summary.setText(diagnostic_text(error.diagnostic))
+            return None
+        if address.bit is None:
+            self.summary.setText(translate("ForceList", "{0} is not a bit: only bits are"
+                                           " forced").format(text))
+            return None
+        return address
+
+    def force_typed(self, value: int) -> bool:
+        """Force the bit typed over the list to `value`; False (the reason shown) when it is
+        no bit of the program or no program is loaded."""
+        if self.session.run.engine is None:
+            self.summary.setText(translate("ForceList", "Load a program to force its bits"))
+            return False
+        address = self.typed_bit()
+        if address is None:
+            return False
+        self.session.force(address, value)
+        return True
 
     def describe(self, entry: ForceEntry) -> tuple[str, str, str]:
         """(kind, what, value) shown for one entry."""
         spelled = spelling(self.session.run.program_dialect)
+        names = names_for(self.session.symbols, self.session.run.program_dialect)
+        if entry.kind == "force" and names.typed and entry.address is not None:
+            where = f"{names.spelled(entry.address)} {names.name_of(entry.address)}".strip()
+            return (translate("ForceList", "FORCED"), where, str(int(bool(entry.value))))
         if entry.kind == "force":
             where = ("" if entry.address is None else spelled.address(entry.address)
                      if spelled.dialect else labelled(entry.address, self.session.symbols))
@@ -91,6 +151,10 @@ class ForceListDock(Retranslating, QDockWidget):
             code = spelled.instruction(Instruction(op.name, op.operand, op.params))
             text = translate("ForceList", "network {0}, line {1}: {2}").format(
                 op.source.network + 1, op.source.line, code)
+            program = self.session.run.program
+            titles = network_titles(program) if names.typed and program is not None else []
+            if op.source.network < len(titles):  # S7: the network's title
+                text = f"{text} ({titles[op.source.network]})"
         return translate("ForceList", "PASSIVE"), text, ""
 
     def show_entries(self, entries: list[ForceEntry]) -> None:

@@ -1,7 +1,9 @@
 """PLC › Modbus server: serve the console's PLC over Modbus/TCP (start/stop, address, clients).
 
 The map served is the program's dialect's own, or a user's CSV map file (`--map` of the CLI)
-chosen in the dock; a file's bad lines are listed at their line numbers, translated.
+chosen in the dock; a file's bad lines are listed at their line numbers, translated. An S7
+program with global DBs offers them for the holding registers (MB_SERVER's MB_HOLD_REG; the
+CLI's `--map DB`), the bit memory %MW being the default.
 
 The server answers from the session's own PlcRun (the memory the docks show), on its own
 asyncio thread (core `ModbusServer`); a client's write is published to the docks at once
@@ -10,8 +12,11 @@ unless the scan thread runs (its publish timer shows it with the next snapshot).
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from PySide6.QtCore import QCoreApplication, QTimer, Signal
 from PySide6.QtWidgets import (
+    QComboBox,
     QDockWidget,
     QFileDialog,
     QFormLayout,
@@ -25,7 +30,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.modbus.bridge import PlcBridge, program_dialect
-from ladderworks.core.modbus.map_file import read_map
+from ladderworks.core.modbus.db_map import chosen_map, data_blocks, db_map
 from ladderworks.core.modbus.maps import ModbusMap
 from ladderworks.core.modbus.server import (
     DEFAULT_HOST,
@@ -34,6 +39,7 @@ from ladderworks.core.modbus.server import (
     is_loopback,
     parse_endpoint,
 )
+from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.family_words import family_title
 from ladderworks.gui.plc_session import PlcSession
@@ -68,6 +74,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self.map_file = QLineEdit(body)  # empty: the dialect's own map
         self.map_file.setObjectName("modbusMapFile")
         self.map_label.setBuddy(self.map_file)
+        self.map_file.textChanged.connect(lambda _text: self.show_state())
         form.addRow(self.map_label, self.map_file)  # the whole row: its placeholder reads whole
         map_row = QHBoxLayout()
         map_row.addStretch(1)
@@ -80,6 +87,12 @@ class ModbusDock(Retranslating, QDockWidget):
         self.map_default.clicked.connect(self.map_file.clear)
         map_row.addWidget(self.map_default)
         form.addRow("", map_row)  # the buttons under the field
+        self.holding_label = QLabel(body)
+        self.holding = QComboBox(body)  # S7: %MW or a global DB (MB_HOLD_REG)
+        self.holding.setObjectName("modbusHolding")
+        self.holding_label.setBuddy(self.holding)
+        self.holding.currentIndexChanged.connect(lambda _index: self.show_state())
+        form.addRow(self.holding_label, self.holding)
         self.served_label = QLabel(body)
         self.served = QLabel(body)
         self.served.setObjectName("modbusServedMap")
@@ -121,13 +134,14 @@ class ModbusDock(Retranslating, QDockWidget):
         """Texts in the UI language."""
         self.setWindowTitle(translate("ModbusDock", "Modbus server"))
         self.address_label.setText(translate("ModbusDock", "&Address (host:port):"))
-        self.map_label.setText(translate("ModbusDock", "&Map file (CSV):"))
         self.map_file.setPlaceholderText(translate("ModbusDock", "the {0} map").format(
             family_title(self.session.family)))
         self.map_choose.setText(translate("ModbusDock", "Choose…"))
         self.map_default.setText(translate("ModbusDock", "Dialect's map"))
         self.map_default.setToolTip(translate("ModbusDock", "Serve the program's dialect's"
                                               " own map (docs/modbus.md)"))
+        self.holding_label.setText(translate("ModbusDock", "&Holding registers:"))
+        self.fill_holding()
         self.clients_label.setText(translate("ModbusDock", "Clients connected:"))
         self.rate_label.setText(translate("ModbusDock", "Requests a second:"))
         self.show_state()
@@ -178,20 +192,44 @@ class ModbusDock(Retranslating, QDockWidget):
         if path:
             self.map_file.setText(path)
 
+    def symbols(self) -> SymbolTable | None:
+        """The loaded program's symbol table (None without one)."""
+        program = self.session.run.program
+        return program.symbols if program is not None else None
+
+    def fill_holding(self) -> None:
+        """The holding registers' choices: the bit memory %MW, then each global DB; shown
+        only for a program with global DBs."""
+        blocks = data_blocks(self.symbols())
+        chosen = self.holding.currentData()
+        self.holding.blockSignals(True)
+        self.holding.clear()
+        self.holding.addItem(translate("ModbusDock", "Bit memory (%MW)"), "")
+        for name in blocks:
+            self.holding.addItem(translate("ModbusDock", "Data block {0}").format(name), name)
+        self.holding.setCurrentIndex(max(0, self.holding.findData(chosen)))
+        self.holding.blockSignals(False)
+        self.holding.setVisible(bool(blocks))
+        self.holding_label.setVisible(bool(blocks))
+        self.map_label.setText(translate("ModbusDock", "&Map file (CSV) or DB:") if blocks
+                               else translate("ModbusDock", "&Map file (CSV):"))
+
     def read_map_file(self) -> tuple[bool, ModbusMap | None]:
-        """(True, the map file's map, or None for the dialect's map when no file is named);
-        (False, None), with `error` set to its bad lines, when the file cannot be used."""
+        """(True, the map file's map, a DB's map, or None for the dialect's map when neither
+        is named); (False, None), with `error` set to its bad lines, when it cannot be used."""
         path = self.map_file.text().strip()
-        if not path:
-            return True, None
+        block = self.holding.currentData() if self.holding.isVisibleTo(self) else ""
         try:
-            return True, read_map(path, program_dialect(self.session.run))
+            if not path:
+                return True, db_map(self.symbols(), block) if block else None
+            return True, chosen_map(path, program_dialect(self.session.run), self.symbols())
         except OSError as problem:
             self.error = translate("ModbusDock", "Cannot read the map {0}: {1}").format(
                 path, problem.strerror or str(problem))
         except DiagnosticError as problem:
             lines = [translate("ModbusDock", "line {0}: {1}").format(
-                d.line, diagnostic_text(d)) for d in problem.diagnostics]
+                d.line, diagnostic_text(d)) if d.line else diagnostic_text(d)
+                for d in problem.diagnostics]
             self.error = "\n".join([translate("ModbusDock", "The map {0} is not served:"
                                                ).format(path), *lines])
         return False, None
@@ -199,6 +237,14 @@ class ModbusDock(Retranslating, QDockWidget):
     def served_map_text(self) -> str:
         """Which map the server serves (or would serve): the dialect's own or the file."""
         path = self.served_file if self.running else self.map_file.text().strip()
+        block = self.holding.currentData() if self.holding.isVisibleTo(self) else ""
+        if path and not Path(path).is_file():  # a DB typed by its name (`--map DB`)
+            wanted = f'"{path.strip(chr(34))}"'.lower()
+            block = next((b for b in data_blocks(self.symbols()) if b.lower() == wanted), "")
+            path = "" if block else path
+        if not path and block:
+            return translate("ModbusDock", "the {0} map, holding registers in the DB {1}"
+                             ).format(family_title(program_dialect(self.session.run)), block)
         if path:
             return translate("ModbusDock", "the file {0}").format(path)
         return translate("ModbusDock", "the {0} map").format(family_title(
@@ -226,7 +272,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self.button.setText(translate("ModbusDock", "Stop server") if running
                             else translate("ModbusDock", "Start server"))
         self.address.setEnabled(not running)
-        for widget in (self.map_file, self.map_choose, self.map_default):
+        for widget in (self.map_file, self.map_choose, self.map_default, self.holding):
             widget.setEnabled(not running)
         self.served_label.setText(translate("ModbusDock", "Map served:") if running
                                   else translate("ModbusDock", "Map to serve:"))
@@ -250,6 +296,7 @@ class ModbusDock(Retranslating, QDockWidget):
     def _program_loaded(self, _binary: object) -> None:
         """A new program: serve it with its dialect's map, or the map file read again for
         its dialect (the server stops, the reason shown, when the file does not fit it)."""
+        self.fill_holding()
         if self.server is None:
             self.show_state()
             return

@@ -182,8 +182,9 @@ class ScenarioDock(Retranslating, QDockWidget):
         for check in result.checks:
             state = (translate("Scenario", "passed") if check.passed
                      else translate("Scenario", "FAILED"))
-            self._item([str(check.line), f"{check.command} {check.target}", str(check.expected),
-                        str(check.got), str(check.time_ms), state],
+            op, expected, got = check.shown or ("", str(check.expected), str(check.got))
+            self._item([str(check.line), f"{check.command} {check.target}",
+                        f"{'' if op == '=' else op}{expected}", got, str(check.time_ms), state],
                        _PASS if check.passed else _FAIL, check)
         for column in range(self.checks.columnCount() - 1):  # passed / FAILED in view
             self.checks.resizeColumnToContents(column)

@@ -7,7 +7,6 @@ and draws each lane as a sample-and-hold step trace.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from pathlib import Path
 
@@ -25,6 +24,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.address import AddressError
+from ladderworks.core.tag_names import split_names, typed_text
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
@@ -46,12 +46,16 @@ translate = QCoreApplication.translate
 LANE_HEIGHT = 1.6  # a lane's trace spans 0..1 of it; the rest separates it from the next
 DEFAULT_PERIOD_MS = 8
 MAX_PERIOD_MS = 60_000
-_SPLIT = re.compile(r"[\s,;]+")
 # least seconds between two redraws while the PLC scans in real time (snapshot_gate.PACED):
 # four a second follow a running machine; each one takes the interpreter from the scan thread
 REDRAW_INTERVAL = 0.25
 SHORT_PLOT = 140  # px: a plot this high or higher shows the time axis's title
 _COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
+
+
+def shown(value: int, signal: TracedSignal) -> str:
+    """A lane's value as its type writes it (an S7 Time `T#5s`, a Real), else the number."""
+    return typed_text(value, signal.type_name, signal.width) or str(value)
 
 
 class TimeChartDock(Retranslating, QDockWidget):
@@ -178,7 +182,7 @@ class TimeChartDock(Retranslating, QDockWidget):
 
     def parse_signals(self) -> list[TracedSignal] | None:
         """The lanes typed in the box (None and a message when one is wrong or none is given)."""
-        texts = [text for text in _SPLIT.split(self.signals_edit.text().strip()) if text]
+        texts = split_names(self.signals_edit.text())  # `"Lamba 1"` is one name
         if not texts:
             self.say(lambda: chart_hint(self.session.family), error=True)
             return None
@@ -259,7 +263,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         """The lane's label: the address and, for a named signal, its short name."""
         name = program_name(signal.address, self.session.symbols,
                             self.session.run.program_dialect)
-        return f"{signal.label} {name}" if name else signal.label
+        return f"{signal.label} {name}" if name and name != signal.label else signal.label
 
     def lane_base(self, lane: int) -> float:
         """The y of a lane's 0 level (the first lane on top)."""
@@ -289,7 +293,7 @@ class TimeChartDock(Retranslating, QDockWidget):
                                       pen=pg.mkPen(colour, width=2))
                 item.addItem(curve)
             else:  # a value: a bus lane with each value written in it
-                bus = BusLane(item, colour, base, signal.width)
+                bus = BusLane(item, colour, base, signal.width, signal.type_name)
                 self._buses[lane] = bus
                 curve = bus.outline
             self._curves.append(curve)
@@ -418,8 +422,9 @@ class TimeChartDock(Retranslating, QDockWidget):
             self._fit_labels()
             return
         values = "   ".join(
-            f"{label} = {'–' if value is None else value}"
-            for label, value in self.cursor_values().items()
+            f"{signal.label} = {'–' if value is None else shown(value, signal)}"
+            for signal, value in zip(self.record.signals, self.cursor_values().values(),
+                                     strict=False)
         )
         note = self.cursor_note(self.time_cursor.value()) if self.cursor_note else ""
         self.cursor_label.setText(

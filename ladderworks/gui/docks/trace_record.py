@@ -12,6 +12,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.dialects import typed_target
 from ladderworks.core.plc.trace import TraceSample
 from ladderworks.core.symbols import SymbolTable
+from ladderworks.core.tag_names import names_for
 
 
 @dataclass(frozen=True, slots=True)
@@ -21,6 +22,7 @@ class TracedSignal:
     address: Address
     width: int = 1
     spelled: str = ""  # the address as the program's dialect writes it (`D0`), "" for the PMC's
+    type_name: str = ""  # an S7 tag's type (`Time`, `Real`, `Int`): how its values are written
 
     @property
     def is_bit(self) -> bool:
@@ -46,6 +48,10 @@ def parse_traced(text: str, symbols: SymbolTable | None = None,
                  dialect: str | None = None) -> TracedSignal:
     """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`, or a program symbol (`ESKIP`); in a
     Delta program Delta's devices (`X10`, `D0`); raises AddressError (see `parse_target`)."""
+    names = names_for(symbols, dialect)
+    if names.typed:  # S7: a tag with its type's width (`"Motor".Q`, `"T1".ET`), or `%MW2`
+        named = names.resolve(text)
+        return TracedSignal(named.address, named.width, named.text, named.type_name)
     target = typed_target(text, symbols.address_of if symbols is not None else None, dialect)
     return traced(target.address, target.width, dialect)
 

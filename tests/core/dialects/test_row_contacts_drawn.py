@@ -16,8 +16,9 @@ from ladderworks.core.ladder.clipboard import copy_text, network_from_text
 from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.layout import layout_network
-from ladderworks.core.ladder.logic import has_bare_branch, read_rung, stack_depth
+from ladderworks.core.ladder.logic import has_bare_branch, stack_depth
 from ladderworks.core.ladder.model import Contact, FunctionBox, LadderNetwork
+from ladderworks.core.ladder.reading import read_rung
 from ladderworks.core.ladder.row_contacts import ALWAYS_ON, contact_combine, mark
 from tests.core.dialects.fatek.test_programs import fatek as fatek_program
 

@@ -13,9 +13,9 @@ from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.edits import add_parallel, invert
 from ladderworks.core.ladder.layout import layout_network
-from ladderworks.core.ladder.logic import read_rung
 from ladderworks.core.ladder.model import Coil, FunctionBox, LadderNetwork
 from ladderworks.core.ladder.power import PowerFlow
+from ladderworks.core.ladder.reading import read_rung
 from tests.core.ladder.strategies import PMC_EXAMPLES
 
 

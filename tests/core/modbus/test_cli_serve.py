@@ -23,11 +23,12 @@ SERVING = re.compile(r"on 127\.0\.0\.1:(\d+), Modbus/TCP")
 
 
 @contextmanager
-def served(program: Path) -> Iterator[tuple[subprocess.Popen[str], str, ModbusTcpClient]]:
+def served(program: Path, *extra: str
+           ) -> Iterator[tuple[subprocess.Popen[str], str, ModbusTcpClient]]:
     """`ladderworks-cli serve PROGRAM` on a free loopback port: the process, the line it printed
     first and a client connected to it; the process is killed at the end if it still runs."""
     with subprocess.Popen([sys.executable, "-m", "ladderworks.cli", "serve", str(program),
-                           "--modbus", "127.0.0.1:0"], cwd=CHECKOUT, text=True,
+                           "--modbus", "127.0.0.1:0", *extra], cwd=CHECKOUT, text=True,
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE) as process:
         try:
             assert process.stdout is not None

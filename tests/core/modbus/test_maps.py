@@ -15,6 +15,7 @@ from ladderworks.core.modbus.maps import (
     DELTA_MAP,
     FATEK_MAP,
     PMC_MAP,
+    S7_MAP,
     Access,
     ModbusMap,
     Table,
@@ -86,7 +87,8 @@ def test_no_two_rows_of_a_table_share_an_address(modbus_map: ModbusMap) -> None:
 def test_the_map_of_each_dialect() -> None:
     assert default_map("seed") is PMC_MAP and default_map("fanuc") is PMC_MAP
     assert default_map("delta") is DELTA_MAP and default_map("fatek") is FATEK_MAP
-    assert set(DEFAULT_MAPS) == {"seed", "fanuc", "delta", "fatek"}
+    assert default_map("s7") is S7_MAP
+    assert set(DEFAULT_MAPS) == {"seed", "fanuc", "delta", "fatek", "s7"}
 
 
 def first(modbus_map: ModbusMap, table: Table, device: str) -> int:

@@ -8,7 +8,7 @@ from __future__ import annotations
 from ladderworks.core.dialects.fatek.branches import Lowered
 from ladderworks.core.dialects.fatek.listing import Record
 from ladderworks.core.instructions import StackOp
-from ladderworks.core.ladder.logic import Undrawable, read_rung
+from ladderworks.core.ladder.reading import Undrawable, read_rung
 
 PUSH, READ, LAST = "FBS.TRPUSH", "FBS.TRREAD", "FBS.TRLAST"
 _OUTPUTS = ("OUT", "OUTS", "OUTR", "SET", "RST")

@@ -85,7 +85,7 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
     _row("FBS.ABS", SUB_BASE + 28, "ABS", "Absolute value", "MUTLAK DEĞER",
          params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
     _row("FBS.EXT", SUB_BASE + 29, "EXT", "Sign extension", "İŞARET GENİŞLET",
-         params=(MODE, _value("S"), _register("output")), w1=False),
+         params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
     _mover_row("FBS.SHFL", 51, "SHFL", "Shift left", "SOLA KAYDIR", ("EN", "INB")),
     _mover_row("FBS.SHFR", 52, "SHFR", "Shift right", "SAĞA KAYDIR", ("EN", "INB")),
     _mover_row("FBS.ROTL", 53, "ROTL", "Rotate left", "SOLA DÖNDÜR", ("EN",)),

@@ -21,6 +21,7 @@ from ladderworks.core.dialects.s7.layout import (
     TIMER_MEMBERS,
     TIMER_TYPES,
     Layout,
+    size_of,
 )
 from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd, parse_sources
 from ladderworks.core.dialects.s7.source import S7Model, program_of
@@ -50,29 +51,43 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
     entry block's interface (`#Name`)."""
     table = SymbolTable()
 
-    def add(name: str, address: Address, comment: str = "", type_name: str = "") -> None:
+    def add(name: str, address: Address, comment: str = "") -> None:
         table.add(address, Symbol(name, (comment,) if comment else ()))
-        table.types.setdefault(name, type_name)
 
+    def typed(name: str, type_name: str) -> None:
+        table.types.setdefault(name, (type_name, size_of(type_name)))
+
+    for block in program.blocks:  # every global DB laid out, used or not (a Modbus map's)
+        if block.kind == "GlobalDB":
+            layout.global_name((block.name,))
     for tag in program.tags:
         place = layout.global_name((tag.name,))
         if place is not None:
-            add(f'"{tag.name}"', place.address, tag.comment, place.type_name)
+            add(f'"{tag.name}"', place.address, tag.comment)
             table.by_symbol.setdefault(tag.name, place.address)
-            table.types.setdefault(tag.name, place.type_name)
+            typed(f'"{tag.name}"', tag.type_name)
     for section in ("Input", "Output", "InOut", "Static", "Temp"):
         for member in entry.members(section):
             place = layout.local(entry, (member.name,))
             if place is not None:
-                add(f"#{member.name}", place.address, member.comment, place.type_name)
+                add(f"#{member.name}", place.address, member.comment)
                 table.by_symbol.setdefault(member.name, place.address)
-                table.types.setdefault(member.name, place.type_name)
+                typed(f"#{member.name}", member.type_name)
     own = (f"#{entry.name.lower()}",)
     for key, place in list(layout.places.items()):
+        if len(key) == 1 and key in layout.members and place.type_name == "Struct" \
+                and not key[0].startswith("#"):
+            member = layout.members[key]  # a DB itself: its name and whole size
+            table.types.setdefault(f'"{member.name}"', (
+                place.type_name, size_of(member.type_name, member.members)))
+            table.by_symbol.setdefault(f'"{member.name}"', place.address)
         if place.type_name == "Struct" or (len(key) < 2 and key[0].startswith("#")):
             continue
         names = [(layout.members[key[:n]].name if key[:n] in layout.members else key[n - 1])
                  for n in range(1, len(key) + 1)]
+        db = program.block(key[0]) if key[:1] not in layout.members else None
+        if db is not None:  # an instance DB named by its scope: as TIA spells it
+            names[0] = db.name
         if key[:1] == own:  # the entry block's own members: #Data.Count
             name = "#" + ".".join(names[1:])
         elif key[0].startswith("#"):  # another block's (an FC's): its members by block
@@ -81,15 +96,15 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
             name = ".".join([f'"{names[0]}"', *names[1:]])
         if name not in table.by_symbol:
             table.by_symbol[name] = place.address
-            table.types[name] = place.type_name
+        typed(name, place.type_name)
         kind = place.type_name.lower()
         members = TIMER_MEMBERS if kind in TIMER_TYPES else COUNTER_MEMBERS \
             if kind in COUNTER_TYPES else {}
         for pin in members:  # an instance's members: "IEC_Timer_0_DB".Q, #Zaman.ET
             inner = layout.sub(key, (pin,))
-            if inner is not None and f"{name}.{pin.upper()}" not in table.by_symbol:
-                table.by_symbol[f"{name}.{pin.upper()}"] = inner.address
-                table.types[f"{name}.{pin.upper()}"] = inner.type_name
+            if inner is not None:
+                table.by_symbol.setdefault(f"{name}.{pin.upper()}", inner.address)
+                typed(f"{name}.{pin.upper()}", inner.type_name)
     # the instances' members (`"T1".Q`, `#Timer.ET`) resolve on demand in scenarios
     return table
 

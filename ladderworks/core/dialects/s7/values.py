@@ -17,7 +17,8 @@ from ladderworks.core.plc.memory import Memory
 _HEX = {typed.ValueType.BYTE: 2, typed.ValueType.WORD: 4, typed.ValueType.DWORD: 8}
 
 
-def _time_text(ms: int) -> str:
+def time_text(ms: int) -> str:
+    """A Time as TIA's watch table shows it: `T#5S`, `T#1M_30S`, `T#-2S_500MS`."""
     sign, ms = ("-", -ms) if ms < 0 else ("", ms)
     parts = []
     for unit, size in (("D", 86_400_000), ("H", 3_600_000), ("M", 60_000), ("S", 1000)):
@@ -67,7 +68,7 @@ def show(memory: Memory, place: Place) -> str:
     if vtype is typed.ValueType.BOOL:
         return "TRUE" if value else "FALSE"
     if vtype is typed.ValueType.TIME:
-        return _time_text(int(value))
+        return time_text(int(value))
     if vtype is typed.ValueType.CHAR:
         return _quoted(chr(int(value)))
     if vtype in _HEX:

@@ -98,10 +98,11 @@ function("FBS.ABS")(_unary(False))
 @function("FBS.EXT")
 def fatek_extend(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                  params: tuple) -> bool:
-    """FUN 29 EXT: the 16-bit S sign-extended into the 32-bit D (D and the register after)."""
-    mode, source, destination = params
+    """FUN 29 EXT: the 16-bit D sign-extended into the 32-bit D + 1, D (FBs manual p. 7-8);
+    the D form does the same [chosen]."""
+    mode, destination = params
     if runs(state, mode, inputs[0]):
-        ctx.memory.write(destination, operand_value(ctx.memory, source, 2), 4)
+        ctx.memory.write(destination, ctx.memory.read(destination, 2, signed=True), 4)
     return False
 
 

@@ -33,6 +33,10 @@ class Timer:
         self.start_at = Address(base.area, base.byte + 12)
         self.flags = base.byte + 8
 
+    def __reduce__(self) -> tuple:
+        """Pickled as None (a scan process's state): it is found again in the memory there."""
+        return (type(None), ())
+
     def get(self, offset: int) -> int:
         """A 4-byte signed member (PT +0, ET +4)."""
         return self.memory.read(self.pt_at if offset == 0 else self.et_at, 4, signed=True)
@@ -64,7 +68,8 @@ class Timer:
 def timer_of(ctx: FunctionContext, state: dict, instance: Address) -> Timer:
     """The call site's Timer (its places found at its first run)."""
     timer = state.get("timer")
-    if timer is None or timer.memory is not ctx.memory:
+    if timer is None or timer.memory is not ctx.memory \
+            or timer.data is not ctx.memory.areas[instance.area]:  # areas moved (scan process)
         timer = state["timer"] = Timer(ctx.memory, instance)
     return timer
 

@@ -13,8 +13,9 @@ from ladderworks.core.dialects.fatek.devices import bit_address, device_at, pars
 from ladderworks.core.dialects.fatek.listing import read_listing
 from ladderworks.core.il.program import Network, Program
 from ladderworks.core.ladder.layout import layout_network
-from ladderworks.core.ladder.logic import code_rung, read_rung
+from ladderworks.core.ladder.logic import code_rung
 from ladderworks.core.ladder.model import Contact
+from ladderworks.core.ladder.reading import read_rung
 from ladderworks.core.plc.engine import ScanEngine
 from tests.core.dialects.fatek.seed002 import CASES, PAIRS
 

@@ -54,12 +54,13 @@ def test_sqrt_neg_abs_ext(monitored: bool) -> None:
     engine = plc("ORG X0\nFUN 26 SQRT\n S : R0\n D : R10\nFO 0\nOUT Y0\n"
                  "ORG X1\nFUN 27P NEG\n D : R11\n"
                  "ORG X1\nFUN 28P ABS\n D : R12\n"
-                 "ORG X1\nFUN 29 EXT\n S : R13\n D : R20\n"
+                 "ORG X1\nFUN 29 EXT\n D : R20\n"
                  "ORG X1\nFUN 26D SQRT\n S : R30\n D : R32\n", monitored)
     put(engine, "R0", 99)
     put(engine, "R11", 5)
     put(engine, "R12", -7)
-    put(engine, "R13", -2)
+    put(engine, "R20", -2)
+    put(engine, "R21", 0x1234)  # ignored: D + 1 takes the sign
     put(engine, "R31", 16)  # R30-R31 = 16 * 65536 = 1048576 = 1024 ** 2
     scan(engine, X0=1, X1=1)
     assert (get(engine, "R10"), get(engine, "Y0")) == (9, 0)
@@ -129,6 +130,23 @@ def test_shfl_and_rotr_as_the_manuals_examples_and_n_out_of_range(monitored: boo
         scan(engine, X0=1)
         assert get(engine, "R0") & 0xFFFF == 0x2F0F
         assert (get(engine, "Y0"), get(engine, "Y1")) == (0, 1)
+
+
+@MODES
+def test_ext_as_the_manuals_example(monitored: bool) -> None:
+    """FBs manual p. 7-8: EXT's one operand D; R0 = CFC7H (-12345) becomes R1R0 = FFFFCFC7H
+    whatever R1 held, and 33FFH becomes 000033FFH."""
+    engine = plc("ORG X0\nFUN 29P EXT\n D : R0\n", monitored)
+    put(engine, "R0", 0xCFC7 - 0x10000)
+    put(engine, "R1", 0x0ABC)
+    scan(engine, X0=1)
+    assert (get(engine, "R0"), get(engine, "R1")) == (-12345, -1)
+    put(engine, "R0", 0x33FF)
+    scan(engine)  # the P form: not again while EN stays 1
+    assert get(engine, "R1") == -1
+    scan(engine, X0=0)
+    scan(engine, X0=1)
+    assert (get(engine, "R0"), get(engine, "R1")) == (0x33FF, 0)
 
 
 @MODES
