@@ -41,7 +41,9 @@ class AsRead:
         """The indexes of `block`'s networks that are new or differ from what was read."""
         return [index for index, network in enumerate(block.networks) if not self.same(network)]
 
-    def unchanged(self, block: Block) -> bool:
-        """True when `block` holds the networks read, as read and in their order."""
+    def unchanged(self, block: Block, changed: list[int] | None = None) -> bool:
+        """True when `block` holds the networks read, as read and in their order (`changed`:
+        its `changed(block)` when known)."""
         keys = [(n.line, n.end_line) for n in block.networks]
-        return not self.changed(block) and keys == list(self.shapes)
+        return keys == list(self.shapes) and not (
+            self.changed(block) if changed is None else changed)

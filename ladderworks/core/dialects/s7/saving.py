@@ -67,9 +67,12 @@ def write_changed(program: Program) -> str | None:
     """The text Save writes for a changed S7 program, or None when its changes are not known as
     changes of its graph (Save then refuses them); Refused when a network cannot be written."""
     model = program.model
-    if not isinstance(model, S7Model) or model.read is None or model.unchanged():
+    if not isinstance(model, S7Model) or model.read is None:
         return None
-    unfinished = [*model.unfinished, *(i for i in model.changed()
+    changed = model.read.changed(model.entry)
+    if model.read.unchanged(model.entry, changed):
+        return None
+    unfinished = [*model.unfinished, *(i for i in changed
                                        if _placeholder(model.entry.networks[i]))]
     if unfinished:
         raise Refused("s7-save-drawing", network=min(unfinished) + 1)
@@ -77,8 +80,7 @@ def write_changed(program: Program) -> str | None:
         return None
     others = [b for b in model.graph.blocks if b is not model.entry]
     try:
-        data = save_block(model.read.data, model.read.form, model.entry, model.changed(),
-                          others)
+        data = save_block(model.read.data, model.read.form, model.entry, changed, others)
     except SaveRefused as error:
         raise Refused(error.code, **error.args_) from None
     text, _form, _problems = decode_text(data)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
+from difflib import SequenceMatcher
 from pathlib import Path
 
 from ladderworks.core.address import Address
@@ -201,28 +202,60 @@ class S7Model:
         return program, problems + found_problems
 
 
+def _key(network: LadderNetwork) -> object:
+    """A network's drawing (and label) as a hashable value: equal drawings, equal keys."""
+    state = network.state()
+    try:
+        hash(state)
+    except TypeError:  # an element holding an unhashable value: its text form
+        return repr(state)
+    return state
+
+
+def _opcodes(old: list[object], new: list[object]) -> list[tuple[str, int, int, int, int]]:
+    """difflib's opcodes between two key lists, the common head and tail taken first."""
+    head, limit = 0, min(len(old), len(new))
+    while head < limit and old[head] == new[head]:
+        head += 1
+    tail = 0
+    while tail < limit - head and old[-1 - tail] == new[-1 - tail]:
+        tail += 1
+    middle = SequenceMatcher(None, old[head:len(old) - tail], new[head:len(new) - tail],
+                             autojunk=False).get_opcodes()
+    codes = [("equal", 0, head, 0, head)] if head else []
+    codes += [(tag, i1 + head, i2 + head, j1 + head, j2 + head)
+              for tag, i1, i2, j1, j2 in middle]
+    if tail:
+        codes.append(("equal", len(old) - tail, len(old), len(new) - tail, len(new)))
+    return codes
+
+
 def match_drawn(old: list[LadderNetwork], new: list[LadderNetwork]
                 ) -> tuple[list[int | None], list[int | None]]:
     """For each network of a drawing: the index of the network first drawn it still equals
-    (None: changed or new), and for a changed one the first-drawn network it replaces — one
-    no network equals, between the unchanged ones around it (None: a new network)."""
-    same: list[int | None] = []
-    free = list(range(len(old)))
-    for net in new:
-        index = next((i for i in free if old[i] == net and old[i].label == net.label), None)
-        if index is not None:
-            free.remove(index)
-        same.append(index)
+    (None: changed or new) — in order, a moved one too — and for a changed one the first-drawn
+    network it replaces: the one at its place among those changed (None: a new network)."""
+    keys_old, keys_new = [_key(n) for n in old], [_key(n) for n in new]
+    same: list[int | None] = [None] * len(new)
+    pairs: list[tuple[int, int]] = []  # (new, old) at the same place of a changed stretch
+    for tag, i1, i2, j1, j2 in _opcodes(keys_old, keys_new):
+        if tag == "equal":
+            same[j1:j2] = range(i1, i2)
+        elif tag == "replace":
+            pairs += [(j1 + k, i1 + k) for k in range(min(i2 - i1, j2 - j1))]
+    used = {i for i in same if i is not None}
+    free = [i for i in range(len(old)) if i not in used]
+    for j, key in enumerate(keys_new):  # a network moved: still the one first drawn
+        if same[j] is None:
+            index = next((i for i in free if keys_old[i] == key), None)
+            if index is not None:
+                same[j] = index
+                free.remove(index)
     replaces: list[int | None] = [None] * len(new)
-    for j, index in enumerate(same):
-        if index is not None:
-            continue
-        before = max((k for k in same[:j] if k is not None), default=-1)
-        after = min((k for k in same[j + 1:] if k is not None), default=len(old))
-        pick = next((k for k in free if before < k < after), None)
-        if pick is not None:
-            free.remove(pick)
-            replaces[j] = pick
+    for j, i in pairs:
+        if same[j] is None and i in free:
+            replaces[j] = i
+            free.remove(i)
     return same, replaces
 
 

@@ -247,6 +247,10 @@ def test_a_changed_drawing_names_the_network_it_replaces() -> None:
     assert match_drawn([a, b, c], [a, c]) == ([0, 2], [None, None])  # b removed
     assert match_drawn([a, b], [changed, a, b]) == ([None, 0, 1], [None, None, None])  # new
     assert match_drawn([a, b, c], [changed, d, c]) == ([None, None, 2], [0, 1, None])
+    # a network changed to look like an earlier one: the others stay in place
+    assert match_drawn([a, b, a, c, a], [a, b, a, a, a]) == \
+        ([0, 1, 2, None, 4], [None, None, None, 3, None])
+    assert match_drawn([a, b, c], [b, a, c])[0] == [1, 0, 2]  # moved: kept as read
 
 
 @pytest.mark.parametrize(("form", "suffix"), FORMS)
