@@ -249,3 +249,29 @@ def test_monitoring_shows_the_values_beside_a_boxs_pins(qtbot: QtBot,
                      docks.online.live.overlays[0].values[anchor], strict=True))
     assert shown["PT"] == "" and (shown["ET"] == "T#3S" or shown["ET"].startswith("T#2S_9")), \
         shown  # about 3 s (a scan or so late)
+
+
+@pytest.mark.parametrize(("form", "name"), FORMS)
+def test_a_box_operand_changed_in_the_operand_dialog_is_saved(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path, form: str, name: str) -> None:
+    """ENTER on the TON opens its operand dialog; PT typed T#3s; Ctrl+S."""
+    from ladderworks.core.ladder.model import FunctionBox
+
+    path = _copy(tmp_path, form, name)
+    before = path.read_bytes()
+    assert window.load(path)
+    anchor = next(c for c, e in window.editor.networks[0].cells.items()
+                  if isinstance(e, FunctionBox))
+    window.editor.setFocus()
+    window.editor.move_cursor(0, *anchor)
+    qtbot.keyClick(window.editor, Qt.Key.Key_Return)
+    dialog = window.editor.edits.operand_dialog
+    assert dialog is not None
+    pt = next(e for e in dialog.edits if e.objectName() == "operand_PT")
+    assert pt.text() == "T#10s"
+    pt.setText("T#3s")
+    dialog.accept()
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    after = path.read_bytes()
+    assert b"T#3s" in after and b"T#10s" not in after
+    assert set(_changed_lines(before, after)) <= set(_network_lines(before, form))
