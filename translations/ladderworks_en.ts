@@ -1631,62 +1631,72 @@
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
+        <source>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</source>
+        <translation>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
+        <source>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</source>
+        <translation>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="549"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="556"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="552"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="559"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="567"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="570"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="573"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="576"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="579"/>
         <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
         <translation>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="582"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
@@ -1774,7 +1784,7 @@
     <message>
         <location filename="../ladderworks/gui/find_replace.py" line="194"/>
         <location filename="../ladderworks/gui/find_replace.py" line="205"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="280"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="281"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
@@ -1789,43 +1799,43 @@
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="264"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="269"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="270"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="285"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="287"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="287"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="289"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="296"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
         <source>Address, symbol or words, {0}</source>
         <translation>Address, symbol or words, {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
         <source>Address or symbol, {0}</source>
         <translation>Address or symbol, {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/find_replace.py" line="176"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="306"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
@@ -1840,42 +1850,42 @@
         <translation>network comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="307"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="307"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="309"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="308"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="310"/>
         <source>Find &amp;previous</source>
         <translation>Find &amp;previous</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="309"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="311"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="310"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="312"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="311"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="313"/>
         <source>Close</source>
         <translation>Close</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="312"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="314"/>
         <source>Also in comments and signal descriptions</source>
         <translation>Also in comments and signal descriptions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="313"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="315"/>
         <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
         <translation>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</translation>
     </message>
@@ -2117,7 +2127,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="145"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="146"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -2127,42 +2137,47 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="45"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="182"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="183"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="293"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="297"/>
         <source>This instruction is not placed from the palette in this program</source>
         <translation>This instruction is not placed from the palette in this program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="375"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="335"/>
+        <source>Label {0}</source>
+        <translation>Label {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="400"/>
         <source>Output pins</source>
         <translation>Output pins</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="47"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="193"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="194"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="197"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="198"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -2172,17 +2187,17 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="159"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="160"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="57"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="62"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
@@ -2193,12 +2208,12 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="141"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="66"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="67"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
@@ -2208,17 +2223,17 @@
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="402"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="427"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="414"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="439"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="427"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="452"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -2498,205 +2513,209 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="524"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="160"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="134"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="71"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="129"/>
         <source>Ladder programs</source>
         <translation>Ladder programs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="130"/>
         <source>Mnemonic programs</source>
         <translation>Mnemonic programs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="73"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="131"/>
         <source>LADDER-III exports</source>
         <translation>LADDER-III exports</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="74"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="132"/>
         <source>Delta DVP instruction lists</source>
         <translation>Delta DVP instruction lists</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="76"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="134"/>
         <source>WPLSoft projects</source>
         <translation>WPLSoft projects</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="77"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="135"/>
         <source>Fatek WinProladder listings</source>
         <translation>Fatek WinProladder listings</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="79"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="137"/>
         <source>Fatek WinProladder projects</source>
         <translation>Fatek WinProladder projects</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="80"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="138"/>
         <source>Siemens S7-1200 SIMATIC SD blocks</source>
         <translation>Siemens S7-1200 SIMATIC SD blocks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="81"/>
+        <location filename="../ladderworks/gui/file_dialogs.py" line="139"/>
         <source>Siemens S7-1200 SimaticML exports</source>
         <translation>Siemens S7-1200 SimaticML exports</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="124"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="161"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="207"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="181"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="225"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="243"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="199"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="217"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="226"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="244"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="554"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="231"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="231"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="276"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="250"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="84"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="104"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="108"/>
+        <location filename="../ladderworks/gui/save_refusal.py" line="41"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="104"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="108"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="553"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="539"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="570"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="556"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="403"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="483"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
@@ -2762,49 +2781,74 @@
         <translation>{0} symbols imported from {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="46"/>
+        <location filename="../ladderworks/gui/new_program.py" line="47"/>
         <source>All files (*)</source>
         <translation>All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="49"/>
+        <location filename="../ladderworks/gui/new_program.py" line="50"/>
         <source>Delta DVP instruction lists (*.txt *.TXT)</source>
         <translation>Delta DVP instruction lists (*.txt *.TXT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="52"/>
+        <location filename="../ladderworks/gui/new_program.py" line="53"/>
+        <source>Siemens S7-1200 SIMATIC SD blocks (*.s7dcl)</source>
+        <translation>Siemens S7-1200 SIMATIC SD blocks (*.s7dcl)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="54"/>
+        <source>Siemens S7-1200 SimaticML exports (*.xml)</source>
+        <translation>Siemens S7-1200 SimaticML exports (*.xml)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="57"/>
         <source>Fatek WinProladder listings (*.lst *.LST)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="54"/>
+        <location filename="../ladderworks/gui/new_program.py" line="59"/>
         <source>Ladder programs (*.LAD *.lad)</source>
         <translation>Ladder programs (*.LAD *.lad)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <location filename="../ladderworks/gui/new_program.py" line="66"/>
         <source>The program has errors: fix them first (see the error list)</source>
         <translation>The program has errors: fix them first (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="65"/>
+        <location filename="../ladderworks/gui/new_program.py" line="70"/>
         <source>The program cannot become a {0} program: {1}</source>
         <translation>The program cannot become a {0} program: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="50"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="68"/>
         <source>Open a folder of exported blocks</source>
         <translation>Open a folder of exported blocks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="60"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="78"/>
         <source>{0}: no changes to save</source>
         <translation>{0}: no changes to save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="84"/>
         <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
         <translation>{0} is a folder of exported blocks: save the changed program under a file name</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="111"/>
+        <source>Saved {0} in the folder {1} (its other files are unchanged)</source>
+        <translation>Saved {0} in the folder {1} (its other files are unchanged)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/save_refusal.py" line="41"/>
+        <source>{0} is not written: {1}</source>
+        <translation>{0} is not written: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/save_refusal.py" line="46"/>
+        <source>Not saved: {0}</source>
+        <translation>Not saved: {0}</translation>
     </message>
 </context>
 <context>
@@ -2982,27 +3026,27 @@
 <context>
     <name>NewProgram</name>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="77"/>
+        <location filename="../ladderworks/gui/new_program.py" line="82"/>
         <source>New program</source>
         <translation>New program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="84"/>
+        <location filename="../ladderworks/gui/new_program.py" line="89"/>
         <source>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</source>
         <translation>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="92"/>
+        <location filename="../ladderworks/gui/new_program.py" line="97"/>
         <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
         <translation>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="97"/>
+        <location filename="../ladderworks/gui/new_program.py" line="102"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="98"/>
+        <location filename="../ladderworks/gui/new_program.py" line="103"/>
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -3622,7 +3666,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="393"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="166"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="167"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
@@ -3662,7 +3706,7 @@
         <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="106"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
@@ -3715,33 +3759,33 @@
         <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="109"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="175"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="176"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="136"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="137"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="146"/>
         <source>Off-line: another program is shown; it is not the program the PLC runs</source>
         <translation>Off-line: another program is shown; it is not the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="199"/>
         <source>Select a contact, coil or function first</source>
         <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="203"/>
         <source>This element has no op in the PLC program</source>
         <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="226"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
     </message>
@@ -4440,77 +4484,87 @@
         <translation>{0} is read-only and is not replaced. Save the program under another name?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="66"/>
+        <location filename="../ladderworks/gui/questions.py" line="67"/>
+        <source>Change not saved</source>
+        <translation>Change not saved</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="67"/>
+        <source>{0} is not overwritten: {1}. Save the program under another name?</source>
+        <translation>{0} is not overwritten: {1}. Save the program under another name?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="75"/>
         <source>Character not in the file&apos;s encoding</source>
         <translation>Character not in the file&apos;s encoding</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="66"/>
+        <location filename="../ladderworks/gui/questions.py" line="75"/>
         <source>Line {0}, column {1}: the character &apos;{2}&apos; (U+{3:04X}) cannot be written in {4}, the encoding of {5}. Save the whole file as UTF-8 instead?</source>
         <translation>Line {0}, column {1}: the character &apos;{2}&apos; (U+{3:04X}) cannot be written in {4}, the encoding of {5}. Save the whole file as UTF-8 instead?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="71"/>
+        <location filename="../ladderworks/gui/questions.py" line="80"/>
         <source>Save as UTF-8</source>
         <translation>Save as UTF-8</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="76"/>
+        <location filename="../ladderworks/gui/questions.py" line="85"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="76"/>
+        <location filename="../ladderworks/gui/questions.py" line="85"/>
         <source>LadderWorks ended without saving {0}. A recovery copy from {1} was found. Restore it?</source>
         <translation>LadderWorks ended without saving {0}. A recovery copy from {1} was found. Restore it?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="80"/>
+        <location filename="../ladderworks/gui/questions.py" line="89"/>
         <source>Restore</source>
         <translation>Restore</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="81"/>
+        <location filename="../ladderworks/gui/questions.py" line="90"/>
         <source>Discard</source>
         <translation>Discard</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="82"/>
+        <location filename="../ladderworks/gui/questions.py" line="91"/>
         <source>Not now</source>
         <translation>Not now</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="87"/>
+        <location filename="../ladderworks/gui/questions.py" line="96"/>
         <source>The PLC is running</source>
         <translation>The PLC is running</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="87"/>
+        <location filename="../ladderworks/gui/questions.py" line="96"/>
         <source>The PLC is running. Load the new program now? It is loaded between two scans and the PLC runs on with it; forces stay.</source>
         <translation>The PLC is running. Load the new program now? It is loaded between two scans and the PLC runs on with it; forces stay.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="91"/>
+        <location filename="../ladderworks/gui/questions.py" line="100"/>
         <source>Reload now</source>
         <translation>Reload now</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="97"/>
+        <location filename="../ladderworks/gui/questions.py" line="106"/>
         <source>Forced signals</source>
         <translation>Forced signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="97"/>
+        <location filename="../ladderworks/gui/questions.py" line="106"/>
         <source>{0} signal(s) are forced in the PLC for the program it has now. Another program is being loaded: keep these signals forced, or release them?</source>
         <translation>{0} signal(s) are forced in the PLC for the program it has now. Another program is being loaded: keep these signals forced, or release them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="101"/>
+        <location filename="../ladderworks/gui/questions.py" line="110"/>
         <source>Release the forces</source>
         <translation>Release the forces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/questions.py" line="102"/>
+        <location filename="../ladderworks/gui/questions.py" line="111"/>
         <source>Keep them forced</source>
         <translation>Keep them forced</translation>
     </message>

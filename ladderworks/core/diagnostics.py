@@ -542,6 +542,13 @@ MESSAGES: dict[str, str] = {
     "s7-save-unwritable": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{part}' cannot be written in the S7 block's file form: make this "
         "change in TIA Portal"),
+    "s7-label-name": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is no S7 jump label: letters, digits and _, not starting "
+        "with a digit"),
+    "s7-save-drawing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network} is not a complete S7 network yet (an element S7 "
+        "does not have, an operand missing or still <???>): the S7 block's file is not "
+        "written"),
     # SimaticML XML (docs/dialects.md, SimaticML XML)
     "s7xml-too-large": QT_TRANSLATE_NOOP(
         "Diagnostic", "SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks "

@@ -19,6 +19,7 @@ from ladderworks.core.il.printer import encode_program, print_faithful
 from ladderworks.core.il.reading import parse_file, parse_read, parse_text
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text, split_lines
 from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
+from ladderworks.core.ladder.source_model import source_file
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.files import atomic_write_bytes, write_target
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -112,6 +113,10 @@ class ProgramDocument(QObject):
         self.origin: Program | None = None
         self.binary = False  # read from a WPLSoft .dvp project: never written back over it
         self.disk: DiskState | None = None
+        # a folder of exports: the file of its entry block (Save writes a change there) and
+        # what it was when read or last written
+        self.entry: Path | None = None
+        self.entry_disk: DiskState | None = None
         self.watcher = QFileSystemWatcher(self)
         self.watcher.fileChanged.connect(self._on_file_changed)
         model.modified_changed.connect(self.modified_changed)
@@ -134,6 +139,13 @@ class ProgramDocument(QObject):
             return False
         now = DiskState.of(self.path)
         return now is not None and not self.disk.same_content(now)
+
+    def entry_changed_on_disk(self) -> bool:
+        """True when a folder's entry file now differs from what was read or last written."""
+        if self.entry is None or self.entry_disk is None:
+            return False
+        now = DiskState.of(self.entry)
+        return now is None or not self.entry_disk.same_content(now)
 
     def _watch(self, path: Path | None) -> None:
         if self.watcher.files():
@@ -159,7 +171,12 @@ class ProgramDocument(QObject):
         self.origin = None
         self.disk = None
         self.binary = False
+        self._folder_entry(None)
         self._watch(None)
+
+    def _folder_entry(self, entry: Path | None) -> None:
+        self.entry = entry
+        self.entry_disk = DiskState.of(entry) if entry is not None else None
 
     def read(self, path: Path) -> tuple[ParseResult, bytes]:
         """Read and parse `path` (OSError); it becomes the document's file. A folder of
@@ -178,6 +195,7 @@ class ProgramDocument(QObject):
         self.origin = result.program
         self.binary = is_dvp(data)
         self.disk = None if folder else DiskState.of(path, data)
+        self._folder_entry(source_file(result.program) if folder else None)
         self._watch(path)
         return result, data
 
@@ -187,12 +205,14 @@ class ProgramDocument(QObject):
         self.form = result.program.form
         self.origin = result.program
         self.disk = disk
+        self._folder_entry(None)
         self._watch(path)
 
     def detach(self) -> None:
         """Forget the file (an imported `.MOD` is saved as a new program)."""
         self.path = None
         self.disk = None
+        self._folder_entry(None)
         self._watch(None)
 
     # -- writing ------------------------------------------------------------------------
@@ -234,5 +254,13 @@ class ProgramDocument(QObject):
         self.path = path
         self.binary = False  # now the text form's file
         self.disk = DiskState.of(path, data)
+        self._folder_entry(None)
         self._watch(path)
+
+    def write_entry(self, data: bytes) -> None:
+        """Write a folder's entry file atomically (ReadOnlyFile, OSError); the folder stays
+        the document's path."""
+        assert self.entry is not None
+        atomic_write_bytes(self.entry, data)
+        self.entry_disk = DiskState.of(self.entry, data)
 

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, Qt
 from PySide6.QtWidgets import QMessageBox
 
-from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Diagnostic, DiagnosticError, has_errors
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, has_errors
 from ladderworks.core.dialects.delta.dvp_program import save_refused
 from ladderworks.core.dialects.fatek.pdw_file import is_pdw_path
 from ladderworks.core.families import new_program
@@ -19,7 +19,7 @@ from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
-from ladderworks.gui import file_dialogs, folder_program, questions
+from ladderworks.gui import file_dialogs, folder_program, questions, save_refusal
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.document import (
     DiskState,
@@ -64,34 +64,6 @@ def _when(copy: RecoveredCopy) -> str:
     return QLocale().toString(moment, QLocale.FormatType.ShortFormat)
 
 
-
-# File > Open's filters: each kind of program file with its name patterns (names translated,
-# patterns never); the first filter, every program, is their union
-OPEN_FILTERS: tuple[tuple[str, str], ...] = (
-    (QT_TRANSLATE_NOOP("MainWindow", "Ladder programs"), "*.LAD *.lad"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Mnemonic programs"), "*.MOD *.mod *.mnc *.MNC"),
-    (QT_TRANSLATE_NOOP("MainWindow", "LADDER-III exports"), "*.txt *.TXT *.mnc *.MNC"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Delta DVP instruction lists"),
-     "*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV"),
-    (QT_TRANSLATE_NOOP("MainWindow", "WPLSoft projects"), "*.dvp *.DVP"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Fatek WinProladder listings"),
-     "*.lst *.LST *.fbs *.FBS *.txt *.TXT"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Fatek WinProladder projects"), "*.pdw *.PDW"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SIMATIC SD blocks"), "*.s7dcl *.S7DCL"),
-    (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SimaticML exports"), "*.xml *.XML"),
-)
-
-
-def open_filters() -> str:
-    """File > Open's filter string in the UI language: every program, each kind, all files."""
-    patterns: list[str] = []
-    for _name, kind in OPEN_FILTERS:
-        patterns += [pattern for pattern in kind.split() if pattern not in patterns]
-    parts = [f"{translate('MainWindow', 'Ladder and mnemonic programs')} ({' '.join(patterns)})"]
-    parts += [f"{translate('MainWindow', name)} ({kind})" for name, kind in OPEN_FILTERS]
-    parts.append(f"{translate('MainWindow', 'All files')} (*)")
-    return ";;".join(parts)
-
 class FileActions(_Window):
     """File > New / Open / Save / Save As / Import / Export, and recovery: MainWindow's part
     that asks the ProgramDocument to read and write (a mixin, so the public names stay)."""
@@ -100,6 +72,7 @@ class FileActions(_Window):
     recovery: RecoveryStore
     autosaver: Autosaver
     _last_save_result: bool
+    save_as_offered: bool  # inside the Save As a refused Save offered (save_refusal.py)
     if TYPE_CHECKING:  # what MainWindow provides
         editor: LadderEditor
         text_view: ProgramTextView
@@ -124,6 +97,7 @@ class FileActions(_Window):
         self.document.modified_changed.connect(self.update_title)
         self.document.changed_outside.connect(self._on_changed_outside)
         self._last_save_result = False
+        self.save_as_offered = False
         self.recovery = RecoveryStore()
         self.autosaver = Autosaver(self.recovery, self.recovery_snapshot, self)
         self.autosaver.failed.connect(self.show_message)
@@ -283,7 +257,7 @@ class FileActions(_Window):
         name = file_dialogs.open_file_name(
             self, translate("MainWindow", "Open program"),
             str(self.path.parent if self.path else ""),
-            open_filters())
+            file_dialogs.open_filters())
         if name:
             self.load(name)
 
@@ -345,8 +319,8 @@ class FileActions(_Window):
                 return None
             self.document.use_utf8()
             return make()
-        except DiagnosticError as error:  # a dialect that cannot write a change (S7): kept
-            self.warn(translate("MainWindow", "Save"), diagnostic_text(error.diagnostic))
+        except DiagnosticError as error:  # a change its dialect cannot write (S7): kept
+            self._last_save_result = save_refusal.refused(self, path, error.diagnostic)
             return None
 
     def save_to(self, path: str | Path) -> bool:
@@ -377,23 +351,36 @@ class FileActions(_Window):
         go_on = self._may_write(path)
         if not go_on:
             return go_on is None and self._last_save_result
-        drafts = False
-        if showing_text:
-            text = self.text_view.toPlainText()
-            text = text if text.endswith("\n") else text + "\n"
-            data = self._encoded(path, lambda: self.document.encode_text(text))
-        else:
-            program, diagnostics = self._program_to_save()
-            self.dialect = dialect_of(program)
-            drafts = has_errors(diagnostics)
-            self.errors.set_diagnostics(diagnostics)
-            if drafts:
-                self.errors.show()
-            data = self._encoded(path, lambda: self.document.encode(program))
+        data, drafts = self.bytes_to_save(path)
         if data is None:
-            return False
+            return self._last_save_result
         if not self._write(path, data):
             return False
+        self.after_save(path, drafts)
+        return True
+
+    def bytes_to_save(self, path: Path) -> tuple[bytes | None, bool]:
+        """The bytes Save writes to `path` and whether networks with errors are kept as
+        drawings; None when nothing is written (declined, or refused: `save_refusal`)."""
+        self._last_save_result = False
+        if self.model.showing_text:
+            text = self.text_view.toPlainText()
+            text = text if text.endswith("\n") else text + "\n"
+            return self._encoded(path, lambda: self.document.encode_text(text)), False
+        program, diagnostics = self._program_to_save()
+        self.dialect = dialect_of(program)
+        drafts = has_errors(diagnostics)
+        self.errors.set_diagnostics(diagnostics)
+        if drafts:
+            self.errors.show()
+        return self._encoded(path, lambda: self.document.encode(program)), drafts
+
+    def save_answer(self) -> bool:
+        """What Save returns when `bytes_to_save` gave nothing (True: Save As saved it)."""
+        return self._last_save_result
+
+    def after_save(self, path: Path, drafts: bool, message: str = "") -> None:
+        """The program is saved as `path`: unmodified, remembered, the status bar says so."""
         self.model.mark_saved()
         self.text_view.document().setModified(False)
         self.remember_file(path)
@@ -405,9 +392,8 @@ class FileActions(_Window):
                 "Saved {0}; networks with errors are kept as drawings (see the error list)",
             ).format(path.name))
         else:
-            self.show_message(translate("MainWindow", "Saved {0}").format(path.name))
+            self.show_message(message or translate("MainWindow", "Saved {0}").format(path.name))
         self.file_saved.emit(str(path))
-        return True
 
     def _write(self, path: Path, data: bytes) -> bool:
         """Write the program and its PMC parameters; warn and False when it fails."""

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from pathlib import PurePath
 
-from PySide6.QtCore import QSize
+from PySide6.QtCore import QCoreApplication, QSize
 from PySide6.QtGui import QShowEvent
 from PySide6.QtWidgets import (
     QDialog,
@@ -17,7 +17,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
 from ladderworks.gui.screen_fit import fit_to_screen
+
+translate = QCoreApplication.translate
 
 WANTED = QSize(900, 560)  # name, size, type and date side by side, also in Turkish
 _PATTERN = re.compile(r"\(\s*\*\.([^\s*?()]+)")  # `(*.LAD`: the first pattern's extension
@@ -118,3 +121,31 @@ def open_folder_name(parent: QWidget | None, caption: str, directory: str) -> st
     dialog.setOption(QFileDialog.Option.ShowDirsOnly, True)
     fit_to_screen(dialog, WANTED.expandedTo(dialog.sizeHint()))
     return _chosen(dialog)
+
+
+# File > Open's filters: each kind of program file with its name patterns (names translated,
+# patterns never); the first filter, every program, is their union
+OPEN_FILTERS: tuple[tuple[str, str], ...] = (
+    (QT_TRANSLATE_NOOP("MainWindow", "Ladder programs"), "*.LAD *.lad"),
+    (QT_TRANSLATE_NOOP("MainWindow", "Mnemonic programs"), "*.MOD *.mod *.mnc *.MNC"),
+    (QT_TRANSLATE_NOOP("MainWindow", "LADDER-III exports"), "*.txt *.TXT *.mnc *.MNC"),
+    (QT_TRANSLATE_NOOP("MainWindow", "Delta DVP instruction lists"),
+     "*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV"),
+    (QT_TRANSLATE_NOOP("MainWindow", "WPLSoft projects"), "*.dvp *.DVP"),
+    (QT_TRANSLATE_NOOP("MainWindow", "Fatek WinProladder listings"),
+     "*.lst *.LST *.fbs *.FBS *.txt *.TXT"),
+    (QT_TRANSLATE_NOOP("MainWindow", "Fatek WinProladder projects"), "*.pdw *.PDW"),
+    (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SIMATIC SD blocks"), "*.s7dcl *.S7DCL"),
+    (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SimaticML exports"), "*.xml *.XML"),
+)
+
+
+def open_filters() -> str:
+    """File > Open's filter string in the UI language: every program, each kind, all files."""
+    patterns: list[str] = []
+    for _name, kind in OPEN_FILTERS:
+        patterns += [pattern for pattern in kind.split() if pattern not in patterns]
+    parts = [f"{translate('MainWindow', 'Ladder and mnemonic programs')} ({' '.join(patterns)})"]
+    parts += [f"{translate('MainWindow', name)} ({kind})" for name, kind in OPEN_FILTERS]
+    parts.append(f"{translate('MainWindow', 'All files')} (*)")
+    return ";;".join(parts)

@@ -259,7 +259,8 @@ class FindReplaceDialog(Retranslating, QDialog):
         if not current:
             self.find_next()
             return False
-        [(index, edit)] = replacements(self.editor.networks, current, query, new)
+        [(index, edit)] = replacements(self.editor.networks, current, query, new,
+                                       self.replace_text.text(), self.editor.spell_address)
         name = StepName("FindReplace", QT_TRANSLATE_NOOP("FindReplace", "Replace {0} with {1}"),
                         (query.text, str(new)))
         self.editor.edits.run_edit(index, edit.apply, name)
@@ -279,7 +280,8 @@ class FindReplaceDialog(Retranslating, QDialog):
         if not hits:
             self._say(translate("FindReplace", "Not found"))
             return 0
-        edits = replacements(self.editor.networks, hits, query, new)
+        edits = replacements(self.editor.networks, hits, query, new, self.replace_text.text(),
+                             self.editor.spell_address)
         self.editor.undo_stack.push(ReplaceAllCommand(
             self.editor, edits,
             StepName("FindReplace", QT_TRANSLATE_NOOP("FindReplace", "Replace all {0} with {1}"),

@@ -42,12 +42,17 @@ def family_title(family: Family) -> str:
 
 def save_filters(dialect: str) -> tuple[str, str]:
     """The Save As filters and the default file name of a program of `dialect`: a Delta
-    instruction list `.txt`, a Fatek listing `.lst`, a PMC program `.LAD`."""
+    instruction list `.txt`, a Fatek listing `.lst`, an S7 block `.s7dcl`/`.xml`, a PMC
+    program `.LAD`."""
     every = translate("MainWindow", "All files (*)")
     found = dialects.get(dialect)
     if found is not None and found.name == "delta":
         return (translate("MainWindow", "Delta DVP instruction lists (*.txt *.TXT)") + ";;"
                 + every, "program.txt")
+    if found is not None and found.name == "s7":  # the block in its own form (saving.py)
+        return (translate("MainWindow", "Siemens S7-1200 SIMATIC SD blocks (*.s7dcl)") + ";;"
+                + translate("MainWindow", "Siemens S7-1200 SimaticML exports (*.xml)") + ";;"
+                + every, "Main.s7dcl")
     if found is not None and found.name == "fatek":
         return (translate("MainWindow", "Fatek WinProladder listings (*.lst *.LST)") + ";;"
                 + every, "program.lst")

@@ -61,6 +61,15 @@ def read_only(parent: QWidget | None, path: Path) -> str | None:
     ).format(path.name), [_save_as(), _cancel()])
 
 
+def save_refused(parent: QWidget | None, path: Path, reason: str) -> str | None:
+    """A change the file's own form cannot hold (an S7 block): 'save_as' or cancel; the file
+    is not overwritten either way."""
+    return ask(parent, translate("Questions", "Change not saved"), translate(
+        "Questions",
+        "{0} is not overwritten: {1}. Save the program under another name?").format(
+        path.name, reason), [_save_as(), _cancel()])
+
+
 def encoding(parent: QWidget | None, path: Path, error: EncodeError) -> str | None:
     """A character the file's encoding cannot hold: 'utf8' or cancel (never written as ?)."""
     return ask(parent, translate("Questions", "Character not in the file's encoding"), translate(

@@ -13,6 +13,7 @@ from pytestqt.qtbot import QtBot
 
 from ladderworks.core.dialects.s7.devices import parse_absolute
 from ladderworks.gui.main_window import MainWindow
+from tests.gui.conftest import Answers
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "resources" / "examples" / "s7"
 XML_EXAMPLES = EXAMPLES.parent / "s7-xml"
@@ -46,15 +47,24 @@ def test_an_s7_block_opens_runs_and_saves_as_read(qtbot: QtBot, window: MainWind
     assert path.read_bytes() == (examples / "jumps" / name).read_bytes()
 
 
-def test_a_changed_s7_block_is_not_saved_and_the_file_is_kept(window: MainWindow,
-                                                              tmp_path: Path) -> None:
+def test_a_deleted_s7_network_is_saved_and_a_change_s7_cannot_hold_keeps_the_file(
+        window: MainWindow, tmp_path: Path, answers: Answers) -> None:
     folder = tmp_path / "timers"
     shutil.copytree(EXAMPLES / "timers", folder)
     path = folder / "Main.s7dcl"
     assert window.load(path)
     window.editor.move_cursor(1, 0, 0)
     window.actions_by_name["action_delete_network"].trigger()
+    assert window.save()
+    saved = path.read_bytes()
+    assert b"MLC_t2" not in saved and b"MLC_t1" in saved  # its region gone, the rest kept
+    blank = window.editor.model.blank_index()
+    window.editor.edits.open_function_dialog(blank, 0, 2, "S7.TON")  # operands left <???>
+    dialog = window.editor.edits.operand_dialog
+    assert dialog is not None
+    dialog.accept()
+    answers.queue.append("cancel")
     assert not window.save()
-    assert "TIA Portal" in window.last_warning
-    assert path.read_bytes() == (EXAMPLES / "timers" / "Main.s7dcl").read_bytes()
+    assert "<???>" in answers.asked[-1][1]
+    assert path.read_bytes() == saved
     assert window.recovery_snapshot() is not None  # the autosave copy does not fail either

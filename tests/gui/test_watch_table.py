@@ -199,7 +199,7 @@ def test_live_values_while_the_plc_scans_in_real_time_and_turkish_texts(
     session.stop()
 
 
-def test_a_changed_folder_program_asks_for_a_file_and_writes_nothing_into_the_folder(
+def test_a_changed_folder_program_writes_its_entry_block_file_only(
         window: MainWindow, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     folder = tmp_path / "timers"
     shutil.copytree(EXAMPLES / "s7" / "timers", folder)
@@ -209,10 +209,11 @@ def test_a_changed_folder_program_asks_for_a_file_and_writes_nothing_into_the_fo
     window.actions_by_name["action_delete_network"].trigger()
     asked: list[str] = []
     monkeypatch.setattr(file_dialogs, "save_file_name",
-                        lambda *args: asked.append(str(args[2])) or "")  # cancelled
-    assert not window.save()
-    assert asked and "folder of exported blocks" in window.last_warning
-    assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
+                        lambda *args: asked.append(str(args[2])) or "")
+    assert window.save()
+    assert not asked and window.path == folder  # no file name asked: the folder's own file
+    after = {p.name: p.read_bytes() for p in folder.iterdir()}
+    assert [name for name in after if after[name] != before[name]] == ["Main.s7dcl"]
 
 
 def test_a_folder_without_exports_is_refused_with_its_reason(window: MainWindow,

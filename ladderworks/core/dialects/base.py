@@ -62,6 +62,10 @@ class Dialect:
     # "module:function": (program) -> the text Save writes for a changed program in its file's
     # own form, or None when the changes are not known to it (then `refuse_changes` refuses)
     writer: str = ""
+    # "module:function": (program) -> True when the program differs from its file in what its
+    # engine networks do not show (S7: an operand written another way for the same address);
+    # Save then asks `writer` though the networks are as read
+    changed: str = ""
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
     spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
     # the rows each module of core/plc/functions implements for it (plc/families.py merges them)
@@ -124,6 +128,10 @@ class Dialect:
         text = _function(self.writer)(program)
         assert text is None or isinstance(text, str)
         return text
+
+    def source_changed(self, program: Program) -> bool:
+        """True when `changed` says the program differs from its file beyond its networks."""
+        return bool(self.changed) and bool(_function(self.changed)(program))
 
     def network_lines(self, network: Network, first: bool, style: object = None) -> list[str]:
         """A new or changed network as this dialect's text (Save, format), in `style` (what

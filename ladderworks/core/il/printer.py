@@ -195,7 +195,8 @@ def print_faithful(program: Program) -> str:
                           newline))
     new_keys = [network.key() for network in program.networks]
     if other is not None and other.refuse_changes and (
-            new_keys != source.keys or tuple(program.trailer) != source.trailer):
+            new_keys != source.keys or tuple(program.trailer) != source.trailer
+            or other.source_changed(program)):
         written = other.write_changed(program)
         if written is None:
             raise Refused(other.refuse_changes)

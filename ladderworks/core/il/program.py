@@ -220,11 +220,11 @@ class Program:
     messages: dict[Address, Message] = field(default_factory=dict)  # %@4 by A bit
     io_modules: list[IoModule] = field(default_factory=list)  # %@5
     # a dialect's own model of its source, kept beside the engine's networks it lowered to
-    # (S7: the network graph, its memory layout and each network's engine networks): the
-    # console draws it and rebuilds the program from a changed drawing (ladder/source_model.py)
+    # (S7: the network graph, its memory layout, each network's engine networks and the entry
+    # block's file as read): the console draws it and rebuilds the program from a changed
+    # drawing (ladder/source_model.py); the dialect's writer saves a change from it (S7:
+    # dialects/s7/saving.py)
     model: object | None = None
-    # a dialect's own form of the program as read, kept for its writer (S7: saving.S7Source)
-    graph: object = None
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Program):

@@ -197,4 +197,3 @@ def adopt_origin(program: Program, origin: Program) -> None:
     program.messages = origin.messages
     program.io_modules = origin.io_modules
     program.model = origin.model
-    program.graph = origin.graph

@@ -359,6 +359,13 @@ def set_network_comments(network: LadderNetwork, lines: list[str]) -> Edit:
     return _change(network, work)
 
 
+def set_label(network: LadderNetwork, label: str) -> Edit:
+    """Set the network's jump label ("" removes it; the source model checks the name)."""
+    work = network.copy()
+    work.label = label.strip()
+    return _change(network, work)
+
+
 def set_params(network: LadderNetwork, row: int, col: int,
                params: tuple[ParamValue, ...] | list[str]) -> Edit:
     """Set a function box's parameters: values, or texts checked like the instruction list."""

@@ -53,9 +53,16 @@ class Found:
 def _typed(text: str, symbols: SymbolTable | None, dialect: str | None,
            want: str | None = None) -> Address:
     """A typed address: a program symbol or the PMC's spelling, or a device of the program's
-    dialect (Delta's `X17`, `D0`: `want` "bit" or "word" for a T/C). AddressError."""
+    dialect (Delta's `X17`, `D0`: `want` "bit" or "word" for a T/C), else a name the program's
+    symbols hold as written (an S7 tag `"Start"`, `#Run`). AddressError."""
     if dialects.get(dialect) is not None:
-        return dialects.parse_target(text, dialect, want)[0]
+        try:
+            return dialects.parse_target(text, dialect, want)[0]
+        except AddressError:
+            named = symbols.by_symbol.get(text) if symbols is not None else None
+            if named is None:
+                raise
+            return named
     return resolve(text, symbols)
 
 
@@ -145,9 +152,12 @@ def _moved(address: Address, query: Query, new: Address) -> Address:
 
 
 def replacements(networks: Sequence[LadderNetwork], hits: Sequence[Found], query: Query,
-                 new: Address) -> list[tuple[int, Edit]]:
+                 new: Address, written: str = "",
+                 spell: Callable[[Address], str] = str) -> list[tuple[int, Edit]]:
     """The edits that replace the hits' addresses with `new`, one per network (in network
-    order), not applied: `edit.apply(network)` makes it and returns the undo."""
+    order), not applied: `edit.apply(network)` makes it and returns the undo. An element drawn
+    with its operand as written (S7's `"Start"`) gets `written` (the replacement as typed), or
+    the address spelled by `spell` where a byte's bit moved."""
     by_network: dict[int, list[Found]] = {}
     for hit in hits:
         by_network.setdefault(hit.network, []).append(hit)
@@ -158,7 +168,10 @@ def replacements(networks: Sequence[LadderNetwork], hits: Sequence[Found], query
             if hit.instruction is not None:
                 _replace_in_listing(work, hit, _moved(hit.address, query, new))
             elif hit.cell is not None:
-                _replace_in_cell(work, hit, _moved(hit.address, query, new))
+                moved = _moved(hit.address, query, new)
+                shown = written.strip() if moved == new and written.strip() else spell(moved)
+                _replace_in_cell(work, hit, moved, shown,
+                                 {query.text.strip(), spell(hit.address)})
         edits.append((index, Edit(work.state())))
     return edits
 
@@ -167,13 +180,26 @@ def _swap(params: tuple[ParamValue, ...], slot: int, new: Address) -> tuple[Para
     return (*params[:slot], new, *params[slot + 1:])
 
 
-def _replace_in_cell(work: LadderNetwork, hit: Found, new: Address) -> None:
+def _replace_in_cell(work: LadderNetwork, hit: Found, new: Address, shown: str,
+                     old: set[str]) -> None:
+    """The hit's address replaced; an operand drawn as written (`texts`, a named pin's text
+    that is one of the `old` texts, quoted or not) shows `shown`."""
     assert hit.cell is not None
     element = work.cells[hit.cell]
     if isinstance(element, Contact | Coil) and hit.slot == OPERAND:
-        work.cells[hit.cell] = replace(element, address=new)
+        texts = (shown, *element.texts[1:]) if element.texts else ()
+        work.cells[hit.cell] = replace(element, address=new, texts=texts)
     elif isinstance(element, FunctionBox):
-        work.cells[hit.cell] = replace(element, params=_swap(element.params, hit.slot, new))
+        names = {_bare(text) for text in old}
+        named = tuple(replace(pin, text=shown) if _bare(pin.text) in names else pin
+                      for pin in element.named)
+        work.cells[hit.cell] = replace(element, params=_swap(element.params, hit.slot, new),
+                                       named=named)
+
+
+def _bare(text: str) -> str:
+    """An operand text without its quotes (S7's `"Geçen Süre"` is the tag Geçen Süre)."""
+    return text.strip().strip('"')
 
 
 def _replace_in_listing(work: LadderNetwork, hit: Found, new: Address) -> None:

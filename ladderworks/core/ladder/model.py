@@ -209,7 +209,8 @@ class LadderNetwork:
         """An immutable snapshot of the drawing (used by edits and comparisons)."""
         return NetworkState(self.columns, self.rows, tuple(sorted(self.cells.items(),
                                                                   key=lambda kv: kv[0])),
-                            frozenset(self.links), tuple(self.comments), self.listing)
+                            frozenset(self.links), tuple(self.comments), self.listing,
+                            self.label)
 
     def restore(self, state: NetworkState) -> None:
         """Make the network equal to a snapshot."""
@@ -219,6 +220,7 @@ class LadderNetwork:
         self.links = set(state.links)
         self.comments = list(state.comments)
         self.listing = state.listing
+        self.label = state.label
 
     def copy(self) -> LadderNetwork:
         """An independent copy (elements are immutable and shared)."""
@@ -290,6 +292,7 @@ class NetworkState:
     links: frozenset[Cell]
     comments: tuple[str, ...]
     listing: tuple[Instruction, ...] | None
+    label: str = ""
 
 
 @dataclass(eq=False, slots=True)

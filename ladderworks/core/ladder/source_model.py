@@ -2,8 +2,9 @@
 
 A family whose source is not an instruction list (S7's network graph) draws its networks from
 that model, one drawn network per source network, instead of laying out the engine's
-instructions; a changed drawing is turned back into the model and lowered again. One ladder
-model serves every family: the drawn networks are LadderNetworks (named box pins, operand texts).
+instructions; a changed drawing is turned back into the model and lowered again, and Save
+writes it into the file it was read from (the dialect's writer). One ladder model serves every
+family: the drawn networks are LadderNetworks (named box pins, operand texts).
 """
 
 from __future__ import annotations
@@ -11,6 +12,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from ladderworks.core.address import Address
     from ladderworks.core.diagnostics import Diagnostic
     from ladderworks.core.il.program import Program
@@ -51,8 +54,22 @@ class SourceModel(Protocol):
         """The element with its operands (in the order of `operands`) set."""
         ...
 
+    def label(self, text: str) -> str | Diagnostic:
+        """A jump label typed for a network, as the source writes it, or why it is none."""
+        ...
+
+    def source_file(self) -> Path | None:
+        """The file the drawn source was read from (a folder's entry block's), else None."""
+        ...
+
 
 def source_model(program: Program | None) -> SourceModel | None:
     """The program's model of its source when its dialect keeps one that draws, else None."""
     model = program.model if program is not None else None
     return model if isinstance(model, SourceModel) else None
+
+
+def source_file(program: Program | None) -> Path | None:
+    """The file a program drawn from its model was read from (a folder's entry block's)."""
+    model = source_model(program)
+    return model.source_file() if model is not None else None

@@ -12,6 +12,9 @@ from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.instructions import ParamKind
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.model import Cell, FunctionBox, LadderNetwork
+from ladderworks.core.symbols import SymbolTable
+from ladderworks.core.watch.pins import PinPlace, pin_places, pin_values
+from ladderworks.core.watch.values import Memory
 from ladderworks.gui.docks.cell_map import (
     binary_networks,
     cell_ops,
@@ -106,6 +109,9 @@ class LivePower:
         self._cells: list[dict[Cell, int] | None] = []  # op index of each element cell
         self._firsts: list[int] = []  # first op of each network with ops (cell_of bisects)
         self._owners: list[int] = []  # the network of each entry of _firsts
+        self.symbols: SymbolTable | None = None  # a named box's pins resolve with these
+        self.dialect: str | None = None
+        self._pins: dict[tuple[int, Cell], list[PinPlace]] = {}  # a named box's pin places
 
     @property
     def attached(self) -> bool:
@@ -113,10 +119,14 @@ class LivePower:
         return self.binary is not None
 
     def attach(self, networks: list[LadderNetwork], layout: Layout, binary: BinaryProgram,
-               ops: list[list[int]]) -> None:
+               ops: list[list[int]], symbols: SymbolTable | None = None,
+               dialect: str | None = None) -> None:
         """Put an overlay on each network (where `layout` stacks it, with its rows) for the ops
-        of `binary`; each is made when first shown."""
+        of `binary`; each is made when first shown. A box with named pins (S7) shows each
+        pin's operand value beside it, found with `symbols` in `dialect`."""
         self.detach()
+        self.symbols, self.dialect = symbols, dialect
+        self._pins = {}
         if not len(ops) == len(networks) == len(layout.tops) == len(layout.rows):
             raise ValueError("one op group and one place per network")
         self.networks = list(networks)
@@ -186,13 +196,23 @@ class LivePower:
             network = self.networks[index]
             power = network_power(network, snapshot.bit, self.cells(index), snapshot.disabled,
                                   snapshot.power_flow if snapshot.monitored else b"", forced)
-            values = {cell: box_values(element, snapshot)
+            memory = Memory(snapshot.bit, snapshot.read)
+            values = {cell: (self._pin_values(index, cell, element, memory) if element.named
+                             else box_values(element, snapshot))
                       for cell, element in network.cells.items()
                       if isinstance(element, FunctionBox)}
             if overlay.set_state(power, values):
                 changed += 1
         self.repaints += changed
         return changed
+
+    def _pin_values(self, index: int, cell: Cell, box: FunctionBox,
+                    memory: Memory) -> list[str]:
+        """One value per named pin of the box at `cell` of network `index` ("" for none)."""
+        places = self._pins.get((index, cell))
+        if places is None:
+            places = self._pins[(index, cell)] = pin_places(box, self.symbols, self.dialect)
+        return pin_values(places, memory)
 
     def op_at(self, network: int, cell: Cell) -> int | None:
         """The op index of the element anchored at `cell` of network `network`."""

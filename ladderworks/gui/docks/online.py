@@ -103,7 +103,8 @@ class OnlineMode(QObject):
             return False
         if not self.live.attached:
             self.session.run.monitor(True)
-        self.live.attach(self.editor.model.networks, self.editor.layout_, binary, ops)
+        self.live.attach(self.editor.model.networks, self.editor.layout_, binary, ops,
+                         self.editor.model.symbols, self.editor.model.dialect)
         self._sync_check(True)
         self.refresh()
         self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))

@@ -27,6 +27,7 @@ LIVE_FILL = QColor(0, 200, 0, 70)
 PASSIVE = QColor("#757575")
 FORCED = QColor("#e65100")
 FOUND = QColor("#1565c0")
+MONITORED = QColor("#00796b")  # a box pin's live value (S7 monitoring)
 
 translate = QCoreApplication.translate
 
@@ -154,12 +155,32 @@ class PowerOverlay(QGraphicsItem):
             py = y + self.rows.wire
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
         values = self.values.get((row, col))
-        if values:
+        if values and box.named:  # a source's box (S7): each pin's value beside its operand
+            self._pin_values(painter, box, x, y, width, values, small)
+        elif values:
             painter.setFont(small)
             painter.setPen(QPen(QColor("#004d40")))
             text = " ".join(values)
             painter.drawText(QRectF(x + 12, y + 20, width - 24, 14),
                              Qt.AlignmentFlag.AlignHCenter, text)
+
+    def _pin_values(self, painter: QPainter, box: FunctionBox, x: float, y: float,
+                    width: float, values: list[str], font: QFont) -> None:
+        """Each named pin's live value under its operand: left of an input, right of an
+        output (as TIA shows PT, ET, CV in monitoring)."""
+        painter.setFont(font)
+        painter.setPen(QPen(MONITORED))
+        for pin, text in zip(box.named, values, strict=False):
+            if not text:
+                continue
+            py = y + pin.row * self.rows.height + self.rows.wire
+            if pin.output:
+                rect = QRectF(x + width + 3, py + 1, CELL_W - 6, 13)
+                align = Qt.AlignmentFlag.AlignLeft
+            else:
+                rect = QRectF(x - CELL_W + 2, py + 1, CELL_W - 6, 13)
+                align = Qt.AlignmentFlag.AlignRight
+            painter.drawText(rect, align | Qt.AlignmentFlag.AlignTop, text)
 
     def _tag(self, painter: QPainter, x: float, y: float, text: str, colour: QColor,
              font: QFont) -> None:

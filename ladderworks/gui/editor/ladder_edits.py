@@ -15,6 +15,7 @@ from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Diagnostic
 from ladderworks.core.dialects.functions import is_contact, placed_params
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
+from ladderworks.core.instruction_fields import Flow
 from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, lookup
 from ladderworks.core.ladder import (
     WIRE,
@@ -289,7 +290,10 @@ class LadderEdits:
         if model is None:
             return False
         element = element if element is not None else model.palette(name)
-        if element is None or isinstance(element, Wire):  # S7's LABEL: the network's label
+        spec = lookup(name)
+        if element is None and spec is not None and spec.flow is Flow.LABEL:
+            return self._label_dialog(index, spec.title)  # S7's LABEL: the network's label
+        if element is None or isinstance(element, Wire):
             self.grid.message.emit(translate(
                 "LadderEditor", "This instruction is not placed from the palette in this "
                 "program"))
@@ -308,6 +312,27 @@ class LadderEdits:
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, changed), step)
             else:  # a comparison at the rail as TIA has it (no leading always-on contact)
                 self.run_edit(index, lambda n: core.place_wired(n, row, col, changed), step)
+            self.grid.setFocus()
+
+        dialog.accepted.connect(done)
+        dialog.open()
+        return True
+
+    def _label_dialog(self, index: int, title: str) -> bool:
+        """The network's jump label typed in a dialog, set on OK (one undo step); a name the
+        source cannot hold is said and nothing changes."""
+        model = source_model(self.grid.model.document.origin)
+        assert model is not None
+        dialog = OperandDialog(title, [("label", self.grid.networks[index].label)], self.grid)
+        self.operand_dialog = dialog
+
+        def done() -> None:
+            label = model.label(dialog.texts()[0])
+            if isinstance(label, Diagnostic):
+                self.grid.message.emit(diagnostic_text(label))
+                return
+            self.run_edit(index, lambda n: core.set_label(n, label),
+                          editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Label {0}"), label))
             self.grid.setFocus()
 
         dialog.accepted.connect(done)

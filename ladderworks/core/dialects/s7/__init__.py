@@ -42,4 +42,5 @@ DIALECT = Dialect(
     namer="ladderworks.core.dialects.s7.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.s7.printer:spelling",
     opener="ladderworks.core.dialects.s7.opening:open_path", refuse_changes="s7-save-changed",
-    writer="ladderworks.core.dialects.s7.saving:write_changed")
+    writer="ladderworks.core.dialects.s7.saving:write_changed",
+    changed="ladderworks.core.dialects.s7.saving:changed_since_read")

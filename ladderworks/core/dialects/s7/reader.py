@@ -2,9 +2,9 @@
 blocks and PLC tag tables; the entry block (the OB, else the first block) is lowered.
 
 An unchanged program saves byte for byte (FileSource: the entry block's file, one span); a
-changed one is written by saving.py when its change is known as a change of its graph
-(`Program.graph`), else refused (`Dialect.refuse_changes`). `.db`/`.udt` sources beside the
-blocks are read with them.
+changed one is written by saving.py when its change is known as a change of its graph (the S7
+model on `Program.model` keeps the entry file as read), else refused (`Dialect.refuse_changes`).
+`.db`/`.udt` sources beside the blocks are read with them.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from pathlib import Path
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7 import scl_source, system_tags
+from ladderworks.core.dialects.s7.as_read import AsRead
 from ladderworks.core.dialects.s7.graph import Block, S7Program
 from ladderworks.core.dialects.s7.layout import (
     COUNTER_MEMBERS,
@@ -24,7 +25,7 @@ from ladderworks.core.dialects.s7.layout import (
     size_of,
 )
 from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
-from ladderworks.core.dialects.s7.source import program_of
+from ladderworks.core.dialects.s7.source import S7Model, program_of
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
 from ladderworks.core.il.program import FileSource, Program
@@ -144,13 +145,14 @@ def _source(program: Program, form: TextForm, lines: list[str], ends: list[str])
         program.source.trailer_span = (0, len(lines))
 
 
-def attach(program: Program, graph: S7Program, data: bytes, form: str) -> None:
-    """Keep what Save needs to write a changed entry block in its own form (saving.py)."""
-    from ladderworks.core.dialects.s7.saving import S7Source
-
-    code = [b for b in graph.blocks if b.kind in ("OB", "FC", "FB")]
-    if code:
-        program.graph = S7Source.of(data, form, graph, code[0])
+def attach(program: Program, blocks: list[Block], data: bytes, form: str,
+           path: Path | None = None) -> None:
+    """Keep the entry block's file as read in the program's model (as_read.py) when the entry
+    block is one of that file's `blocks`: what Save needs to write a changed entry block in
+    its own form (saving.py)."""
+    model = program.model
+    if isinstance(model, S7Model) and any(b is model.entry for b in blocks):
+        model.read = AsRead.of(data, form, model.entry, path)
 
 
 def _parse(text: str, diagnostics: list[Diagnostic]) -> Parsed | None:
@@ -183,10 +185,10 @@ def read(text: str, form: TextForm, lines: list[str],
     """One SD block's text (no companion files) as a Program and its diagnostics."""
     diagnostics: list[Diagnostic] = []
     parsed = _parse(text, diagnostics)
-    program, graph, _layout = build([parsed] if parsed else [], [], {}, diagnostics)
+    program, _graph, _layout = build([parsed] if parsed else [], [], {}, diagnostics)
     _source(program, form, lines, ends)
     if parsed is not None:
-        attach(program, graph, encode_text(text, form), "sd")
+        attach(program, [parsed.block], encode_text(text, form), "sd")
     return program, diagnostics
 
 
@@ -277,10 +279,10 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
         blocks += more
     else:
         parsed = _parse(text, diagnostics)
-    program, graph, _layout = build(([parsed] if parsed else []) + blocks, tags, texts,
-                                    diagnostics)
+    program, _graph, _layout = build(([parsed] if parsed else []) + blocks, tags, texts,
+                                     diagnostics)
     _source(program, form, lines, ends)
     if parsed is not None:  # a changed source is refused on Save (no writer for "scl")
         source = entry.suffix.lower() in SOURCE_SUFFIXES
-        attach(program, graph, raw, "scl" if source else "sd")
+        attach(program, [parsed.block], raw, "scl" if source else "sd", entry)
     return program, diagnostics, form.encoding

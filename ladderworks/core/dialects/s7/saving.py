@@ -2,27 +2,28 @@
 
 `save_block(original, form, block, changed)` writes one block: the file's bytes with only the
 networks at `changed` rewritten (sd_save.py, xml_save.py). A Program read from S7 exports keeps
-an `S7Source` (`Program.graph`): the entry file's bytes, its form and the graph; Save calls
-`write_changed`, which writes when the graph's networks lower to exactly the program's networks
-(so every change made to the program is known as a change of the graph) and returns None
-otherwise, so Save refuses the change (`Dialect.refuse_changes`). docs/dialects.md, "S7-1200:
-saving a changed block".
+its S7 model (`Program.model`, source.py): the graph, the layout, the entry block and its file
+as read (as_read.py). Save calls `write_changed`, which writes when the entry block lowers
+(with the model's layout) to exactly the program's networks — every change made to the program
+is known as a change of the graph — and returns None otherwise, so Save refuses the change
+(`Dialect.refuse_changes`). docs/dialects.md, "S7-1200: saving a changed block".
 """
 
 from __future__ import annotations
 
 from collections.abc import Collection
-from dataclasses import dataclass, field
 
 from ladderworks.core.diagnostics import Refused
-from ladderworks.core.dialects.s7.graph import Block, S7Network, S7Program
-from ladderworks.core.dialects.s7.graph_shape import Shape, shape
+from ladderworks.core.dialects.s7.as_read import FORMS
+from ladderworks.core.dialects.s7.graph import Block, S7Network
+from ladderworks.core.dialects.s7.palette import PLACEHOLDER
 from ladderworks.core.dialects.s7.sd_save import SaveRefused, save_sd
+from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.dialects.s7.xml_save import save_xml
 from ladderworks.core.il.program import Network, Program
 from ladderworks.core.il.textform import decode_text
 
-FORMS = ("sd", "xml")
+__all__ = ["FORMS", "changed_since_read", "lower_graph", "save_block", "write_changed"]
 
 
 def save_block(original: bytes, form: str, block: Block, changed: Collection[int],
@@ -38,59 +39,48 @@ def save_block(original: bytes, form: str, block: Block, changed: Collection[int
     raise SaveRefused("s7-save-unwritable", {"part": form})
 
 
-@dataclass(slots=True)
-class S7Source:
-    """What Save needs of an S7 program read from a file: its bytes and form ("sd"/"xml"), the
-    graph read (`program`, its entry `block`) and each network's shape as read."""
+def lower_graph(model: S7Model) -> list[Network]:
+    """The engine networks the model's entry block lowers to now, with the model's own layout
+    (as `S7Model.rebuild` lowers it: the addresses stay put)."""
+    from ladderworks.core.dialects.s7.source import lower
 
-    data: bytes
-    form: str
-    program: S7Program
-    block: Block
-    read: dict[tuple[int, int], Shape] = field(default_factory=dict)
-
-    @classmethod
-    def of(cls, data: bytes, form: str, program: S7Program, block: Block) -> S7Source:
-        """The source of a program just read, its networks' shapes remembered."""
-        read = {(n.line, n.end_line): shape(n) for n in block.networks}
-        return cls(data, form, program, block, read)
-
-    def changed(self) -> list[int]:
-        """The indexes of the block's networks that are new or differ from what was read."""
-        return [index for index, network in enumerate(self.block.networks)
-                if not self._same(network)]
-
-    def _same(self, network: S7Network) -> bool:
-        key = (network.line, network.end_line)
-        return bool(network.line) and key in self.read and self.read[key] == shape(network)
-
-    def unchanged(self) -> bool:
-        """Whether the block holds the networks read, in their order."""
-        keys = [(n.line, n.end_line) for n in self.block.networks]
-        return not self.changed() and keys == list(self.read)
+    return lower(model.entry, model.layout).networks
 
 
-def lower_graph(source: S7Source) -> list[Network]:
-    """The engine networks the current graph lowers to, as the reader builds them (a caller
-    that changed the graph sets `Program.networks` to these)."""
-    from ladderworks.core.dialects.s7.layout import Layout
-    from ladderworks.core.dialects.s7.lowering import lower_block
+def changed_since_read(program: Program) -> bool:
+    """True when the program's S7 graph differs from its file as read (a change the engine's
+    networks may not show: an operand written another way for the same address)."""
+    model = program.model
+    return isinstance(model, S7Model) and model.read is not None and not model.unchanged()
 
-    networks, _found = lower_block(source.block, Layout(source.program))
-    return networks
+
+def _placeholder(network: S7Network) -> bool:
+    """True when an operand, instance or label of the network is still TIA's `<???>`."""
+    ends = [end for wire in network.wires for end in (wire.source, *wire.targets)]
+    operands = [e.operand for e in ends if e.operand is not None]
+    operands += [p.instance for p in network.parts if p.instance is not None]
+    return any(PLACEHOLDER in (o.text, *o.path) for o in operands) or \
+        any(p.label == PLACEHOLDER for p in network.parts)
 
 
 def write_changed(program: Program) -> str | None:
     """The text Save writes for a changed S7 program, or None when its changes are not known as
-    changes of its graph (Save then refuses them)."""
-    source = program.graph
-    if not isinstance(source, S7Source) or source.unchanged():
+    changes of its graph (Save then refuses them); Refused when a network cannot be written."""
+    model = program.model
+    if not isinstance(model, S7Model) or model.read is None:
         return None
-    if [n.key() for n in lower_graph(source)] != [n.key() for n in program.networks]:
+    changed = model.read.changed(model.entry)
+    if model.read.unchanged(model.entry, changed):
         return None
-    others = [b for b in source.program.blocks if b is not source.block]
+    unfinished = [*model.unfinished, *(i for i in changed
+                                       if _placeholder(model.entry.networks[i]))]
+    if unfinished:
+        raise Refused("s7-save-drawing", network=min(unfinished) + 1)
+    if [n.key() for n in lower_graph(model)] != [n.key() for n in program.networks]:
+        return None
+    others = [b for b in model.graph.blocks if b is not model.entry]
     try:
-        data = save_block(source.data, source.form, source.block, source.changed(), others)
+        data = save_block(model.read.data, model.read.form, model.entry, changed, others)
     except SaveRefused as error:
         raise Refused(error.code, **error.args_) from None
     text, _form, _problems = decode_text(data)

@@ -104,10 +104,10 @@ def read(text: str, form: TextForm, lines: list[str],
     """One SimaticML document's text (no companion files) as a Program."""
     found = read_document(text)
     diagnostics = list(found.diagnostics)
-    program, graph = _build(found.blocks, [], found.tags, {}, diagnostics, None,
+    program, _graph = _build(found.blocks, [], found.tags, {}, diagnostics, None,
                             found.instances)
     reader._source(program, form, lines, ends)
-    _attach(program, graph, found, encode_text(text, form))
+    _attach(program, found, encode_text(text, form))
     return program, diagnostics
 
 
@@ -169,18 +169,17 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     del text
     diagnostics += problems
     instances = {**extra, **found.instances}
-    program, graph = _build(found.blocks, blocks, found.tags + tags, texts, diagnostics, sd,
+    program, _graph = _build(found.blocks, blocks, found.tags + tags, texts, diagnostics, sd,
                             instances)
     reader._source(program, form, lines, ends)
-    _attach(program, graph, found, raw)
+    _attach(program, found, raw, entry)
     return program, diagnostics, form.encoding
 
 
-def _attach(program: Program, graph: S7Program, found: XmlRead, data: bytes) -> None:
-    """Keep the document's bytes and graph for a Save of a changed entry block (saving.py),
-    when the entry block is this document's."""
-    if any(b.kind in CODE for b in found.blocks):
-        reader.attach(program, graph, data, "xml")
+def _attach(program: Program, found: XmlRead, data: bytes, path: Path | None = None) -> None:
+    """Keep the document as read in the program's model for a Save of a changed entry block
+    (saving.py), when the entry block is this document's."""
+    reader.attach(program, found.blocks, data, "xml", path)
 
 
 def _names(path: Path) -> set[str]:

@@ -23,9 +23,10 @@ from ladderworks.core.dialects.s7.graph import (
     Wire,
 )
 from ladderworks.core.dialects.s7.graph_shape import shape
-from ladderworks.core.dialects.s7.saving import S7Source, lower_graph, save_block
+from ladderworks.core.dialects.s7.saving import lower_graph, save_block
 from ladderworks.core.dialects.s7.sd_parser import parse_sd
 from ladderworks.core.dialects.s7.sd_save import SaveRefused
+from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.dialects.s7.xml_reader import read_document
 from ladderworks.core.dialects.s7.xml_writer import write_block
 from ladderworks.core.il.printer import encode_program
@@ -172,20 +173,21 @@ def test_save_writes_a_changed_program_known_as_graph_networks(form: str,
     opener = reader.open_path if form == "s7" else xml_open.open_path
     program, diagnostics, _encoding = opener(path, None)
     assert diagnostics == []
-    source = program.graph
-    assert isinstance(source, S7Source)
+    model = program.model
+    assert isinstance(model, S7Model) and model.read is not None
+    assert model.read.path == path and model.read.form == ("sd" if form == "s7" else "xml")
     assert encode_program(program) == path.read_bytes()
-    _rename(source.block.networks[1], "Lamba 2", "Lamba 1")
-    assert source.changed() == [1]
-    program.networks = lower_graph(source)  # the engine's networks as the edited graph gives them
+    _rename(model.entry.networks[1], "Lamba 2", "Lamba 1")
+    assert model.changed() == [1]
+    program.networks = lower_graph(model)  # the engine's networks as the edited graph gives them
     out = encode_program(program)
     assert out != path.read_bytes()
     shutil.copytree(path.parent, tmp_path / "copy")
     (tmp_path / "copy" / path.name).write_bytes(out)
     again, problems, _encoding = opener(tmp_path / "copy" / path.name, None)
     assert problems == []
-    assert [shape(n) for n in again.graph.block.networks] == \
-        [shape(n) for n in source.block.networks]
+    assert [shape(n) for n in again.model.entry.networks] == \
+        [shape(n) for n in model.entry.networks]
 
 
 def test_save_refuses_a_change_the_graph_does_not_know() -> None:
@@ -195,8 +197,9 @@ def test_save_refuses_a_change_the_graph_does_not_know() -> None:
     with pytest.raises(Refused) as refused:
         encode_program(program)
     assert refused.value.diagnostics[0].code == "s7-save-changed"
-    source = program.graph
-    _rename(source.block.networks[0], "Start", "Stop")  # a graph edit the engine does not hold
+    model = program.model
+    assert isinstance(model, S7Model)
+    _rename(model.entry.networks[0], "Start", "Stop")  # a graph edit the engine does not hold
     with pytest.raises(Refused):
         encode_program(program)
 

@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 
 from ladderworks.core.diagnostics import Severity
-from ladderworks.core.dialects.s7.saving import S7Source, save_block
+from ladderworks.core.dialects.s7.saving import save_block
+from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.dialects.s7.scl_source import parse_scl, split
 from ladderworks.core.dialects.s7.sd_save import SaveRefused
 from ladderworks.core.il.reading import parse_file
@@ -52,12 +53,13 @@ def test_opening_an_scl_source_shows_it_not_simulated_and_refuses_a_change() -> 
     result = parse_file(SCL / "FB_Sayac.scl")
     assert [(d.code, d.severity) for d in result.diagnostics] == [
         ("s7-not-simulated", Severity.WARNING)]
-    source = result.program.graph
-    assert isinstance(source, S7Source) and source.form == "scl"
-    assert "DB_Sayim" in [b.name for b in source.program.blocks]  # the folder's DB
-    source.block.networks[0].source += "\n#Adet := 0;"  # a change of the SCL text
+    model = result.program.model
+    assert isinstance(model, S7Model) and model.read is not None and model.read.form == "scl"
+    assert "DB_Sayim" in [b.name for b in model.graph.blocks]  # the folder's DB
+    model.entry.networks[0].source += "\n#Adet := 0;"  # a change of the SCL text
     with pytest.raises(SaveRefused) as refused:
-        save_block(source.data, source.form, source.block, source.changed())
+        save_block(model.read.data, model.read.form, model.entry,
+                   model.read.changed(model.entry))
     assert refused.value.code == "s7-save-unwritable"
 
 
