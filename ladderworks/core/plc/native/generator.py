@@ -454,14 +454,13 @@ class _Generator:
         if off:
             return "0"
         f = self.f
-        native = builtins.emit(f, spec, impl, op.params, inputs, self.edge_words,
-                               self.layout.edge_base, self.layout.dirty)
+        native = builtins.emit(f, spec, impl, op.params, inputs, self.edge_words, self.layout)
         if native is not None:
             return native
         if stateful.kind(spec, impl) is not None:
             base = self.layout.block_base + state_block.BLOCK * len(self.blocks)
             native = stateful.emit(f, spec, impl, op.params, inputs, base, len(self.blocks),
-                                   self.layout.dirty, self.dialect)
+                                   self.layout.dirty, self.layout.marks, self.dialect)
             if native is not None:
                 self.blocks.append((site, base))
                 return native

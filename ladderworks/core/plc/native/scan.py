@@ -64,6 +64,7 @@ class NativeScan:
         self._blocks = [(self.states[site], base) for site, base in program.blocks]
         self._block_of: dict[int, int] | None = None  # a block's base by id() of its dict
         self._dirty = program.layout.dirty
+        self._marks = program.layout.marks
         words = self._words
         self._now, self._scan_ms, self._wake = (ctypes.c_int64.from_buffer(words, 4 * word)
                                                 for word in (layout.NOW, layout.SCAN_MS,
@@ -106,6 +107,9 @@ class NativeScan:
                 words[word] = (2 | bool(edges[key])) if key in edges else 0
             for state, base in self._blocks:
                 state_block.push(words, base, state)
+            marks = self._marks
+            for k in range(marks - len(self._edge_keys), marks + len(self._blocks)):
+                words[k] = 0
             words[layout.DIRTY] = 0
         blocks = self._blocks
         if blocks:
@@ -192,17 +196,16 @@ class NativeScan:
         words = self._words
         edges = self._ctx.edges
         changed = words[layout.DIRTY]
-        blocks, dirty, edge_keys = self._blocks, self._dirty, self._edge_keys
+        blocks, dirty, edge_keys, marks = self._blocks, self._dirty, self._edge_keys, self._marks
         for k in range(changed):
             entry = words[dirty + k]
+            words[marks + entry] = 0
             if entry >= 0:
                 state, base = blocks[entry]
                 state_block.pull(words, base, state)
             else:
                 word, key = edge_keys[-1 - entry]
-                value = words[word]
-                words[word] = value & 3
-                edges[key] = bool(value & 1)
+                edges[key] = bool(words[word] & 1)
         words[layout.DIRTY] = 0
 
 

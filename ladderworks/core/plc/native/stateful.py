@@ -280,12 +280,12 @@ _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mu
 
 
 def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Sequence[object],
-         inputs: list[str], base: int, number: int, dirty_list: int,
+         inputs: list[str], base: int, number: int, dirty_list: int, marks: int,
          dialect: str) -> str | None:
     """The op's native code with its state in block `number` (at word `base`); None: not
     native (nothing emitted)."""
     found = kind(spec, impl)
-    block = Block(f, base, number, dirty_list)
+    block = Block(f, base, number, dirty_list, marks)
     try:
         if found == "tmr":
             return _tmr(block, params, inputs, dialect)
