@@ -92,7 +92,7 @@ def _object(machine: Any, text: str) -> bytes:
     return bytes(machine.emit_object(module))
 
 
-def compile_ir(parts: Iterable[str], keep: list[bytes] | None = None
+def compile_ir(parts: Iterable[str], keep: list[bytes] | None = None, entry: str = "scan"
                ) -> tuple[Any, int, float, float]:
     """JIT-compile the modules `parts` makes: each is parsed and compiled to object code on a
     worker thread while the next is made (llvmlite's calls release Python's lock, so LLVM
@@ -134,7 +134,7 @@ def compile_ir(parts: Iterable[str], keep: list[bytes] | None = None
         raise failed[0]
     code = pack(objects)
     started = time.perf_counter()
-    engine, address = load_object(code)
+    engine, address = load_object(code, entry)
     if keep is not None:
         keep.append(code)
     return engine, address, making, busy[0] + time.perf_counter() - started
@@ -161,17 +161,17 @@ def unpack(code: bytes) -> list[bytes]:
     return objects
 
 
-def load_object(code: bytes) -> tuple[Any, int]:
-    """An execution engine running stored object code; (engine, address of `scan`)."""
+def load_object(code: bytes, entry: str = "scan") -> tuple[Any, int]:
+    """An execution engine running stored object code; (engine, address of `entry`)."""
     import llvmlite.binding as llvm
 
     engine = llvm.create_mcjit_compiler(llvm.parse_assembly(""), _machine())
     for part in unpack(code):
         engine.add_object_file(llvm.ObjectFileRef.from_data(part))
     engine.finalize_object()
-    address = engine.get_function_address("scan")
+    address = engine.get_function_address(entry)
     if not address:
-        raise RuntimeError("the stored object has no scan function")
+        raise RuntimeError(f"the stored object has no {entry} function")
     return engine, address
 
 

@@ -13,6 +13,7 @@ from ladderworks.core.compiler.checks import implementation_of
 from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import layout, state_block
+from ladderworks.core.plc.native.helpers import differing
 from ladderworks.core.plc.native.ir_text import AREA_ORDER
 from ladderworks.core.plc.native.jit import Compiled, compiled_scan
 
@@ -65,6 +66,11 @@ class NativeScan:
         self._block_of: dict[int, int] | None = None  # a block's base by id() of its dict
         self._dirty = program.layout.dirty
         self._marks = program.layout.marks
+        places = program.layout
+        self._first_block = places.block_base
+        # the edge memories and state blocks: the state the skipper compares (skip_state)
+        self._state_at = 4 * places.edge_base
+        self._state_end = 4 * (places.block_base + state_block.BLOCK * places.stateful)
         words = self._words
         self._now, self._scan_ms, self._wake = (ctypes.c_int64.from_buffer(words, 4 * word)
                                                 for word in (layout.NOW, layout.SCAN_MS,
@@ -186,6 +192,68 @@ class NativeScan:
             base = block_of.get(id(state))
             if base is not None:  # else a call-back's state: read from its dict
                 state_block.push(words, base, state)
+
+    # -- the skipper's view (core/plc/skipping.py): the state words rather than the dicts ---
+
+    def callback_states(self) -> tuple[dict[str, Any], ...]:
+        """The states that live in their dicts while scans run (the call-backs' sites)."""
+        return tuple(site[1] for site in self._sites)
+
+    def skip_state(self) -> bytes:
+        """The edge memories and state blocks as they stand: with memory and the call-backs'
+        dicts, everything the next scan depends on."""
+        return bytes(memoryview(self._words).cast("B")[self._state_at:self._state_end])
+
+    def skip_growth(self, before: bytes, after: bytes) -> list[tuple[int, int, int]] | None:
+        """What the time values (a timer's elapsed time, the scan a site last ran at) grew by
+        from `before` to `after` (two `skip_state()`s), as (block's first word, offset,
+        growth); None when anything else differs (the words compared in native code)."""
+        if before == after:
+            return []
+        first = self._state_at // 4
+        blocks: dict[int, list[int]] = {}
+        for index in differing(before, after):
+            word = first + index
+            offset = (word - self._first_block) % state_block.BLOCK
+            if word < self._first_block or offset < state_block.ELAPSED or \
+                    offset >= state_block.WAKE:
+                return None  # an edge memory, the flags or the wake: not a time value
+            blocks.setdefault(word - offset, []).append(offset)
+        growth = []
+        for base, offsets in blocks.items():
+            at = 4 * base - self._state_at
+            flags = int.from_bytes(after[at:at + 4], "little")
+            for offset, kept in ((state_block.ELAPSED, flags & state_block.ELAPSED_SET and
+                                  not flags & state_block.HAS_VALUE),
+                                 (state_block.AT, flags & state_block.HAS_AT)):
+                if offset not in offsets and offset + 1 not in offsets:
+                    continue
+                if not kept:
+                    return None
+                span = slice(at + 4 * offset, at + 4 * offset + 8)
+                growth.append((base, offset, int.from_bytes(after[span], "little", signed=True)
+                               - int.from_bytes(before[span], "little", signed=True)))
+        return growth
+
+    def skip_wake(self, base: int) -> int | None:
+        """The wake time a block's state says, or None."""
+        words = self._words
+        return state_block._get64(words, base + state_block.WAKE) \
+            if words[base] & state_block.HAS_WAKE else None
+
+    def skip_move(self, growth: list[tuple[int, int, int]], times: int) -> None:
+        """Move the time values on by `times` times their growth (the skipped scans'), the
+        blocks then in the changed list (the dicts get them at the next `sync`)."""
+        words, marks, dirty = self._words, self._marks, self._dirty
+        for base, offset, step in growth:
+            state_block._set64(words, base + offset,
+                               state_block._get64(words, base + offset) + step * times)
+            number = (base - self._first_block) // state_block.BLOCK
+            if not words[marks + number]:
+                words[marks + number] = 1
+                words[dirty + words[layout.DIRTY]] = number
+                words[layout.DIRTY] += 1
+        self._unsynced = True
 
     def sync(self) -> None:
         """Write the call sites' states and the edge memories the scans changed since the last
