@@ -2,9 +2,9 @@
 process's: LLVM works on a thread of its own) and of wall time for a new engine with nothing
 cached (the in-memory cache cleared, the disk cache off), until the engine can scan the whole
 program natively; with the IR made in Python and LLVM's part (parse, passes, code
-generation, linking), which overlap; the best of `--rounds`. `--compare-passes` alternates the rounds between the
-IR passes on every function (as before) and on the units' functions only (jit.CHUNK_PASSES),
-printing both. Prints figures; asserts nothing.
+generation, linking), which overlap; the best of `--rounds`. `--compare-passes` alternates
+the rounds between the IR passes on every function (as before) and on the units' functions
+only (jit.CHUNK_PASSES), printing both. Prints figures; asserts nothing.
 
     python benchmarks/native_compile.py [--rounds N] [--compare-passes] [PROGRAM ...]
 
