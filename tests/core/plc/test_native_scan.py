@@ -167,7 +167,8 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    binary = binary_of("RD X0.0\nTMRC 0 D0 D4\nWRT Y0.0\n")  # TMRC: called back
+    binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nDCNVB 2 D0 D4\n"
+                       "WRT Y0.0\n")  # DCNVB: called back
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
     assert len(engine._current.callbacks) == 1
@@ -311,6 +312,19 @@ def test_tmr_reads_its_preset_and_precision_as_the_python_scan_does(header: str)
     driver = Driver(engines, random.Random(header), bytes_of(Area.X, 1), presets + precision,
                     [])
     driver.run(2000, rate=0.3, longest=40)
+
+
+@pytest.mark.parametrize("header", ["%@3\n", ""], ids=["fanuc", "seed"])
+def test_tmrc_reads_its_preset_and_writes_its_register_as_the_python_scan_does(
+        header: str) -> None:
+    text = "RD X0.0\nTMRC 0 D0 D4\nWRT Y0.0\nRD X0.1\nTMRC 1 D2 D8\nWRT Y0.1\n" \
+           "RD X0.2\nTMRC 6 D12 D14\nWRT Y0.2\n"
+    binary = binary_of(header + text + ("%\n" if header else ""))
+    engines = pair(binary)
+    assert engines[1]._current.callbacks == []
+    presets = [Address(Area.D, byte) for byte in (0, 1, 2, 12)]  # small presets: reached
+    driver = Driver(engines, random.Random(7), bytes_of(Area.X, 1), presets, [])
+    driver.run(1500, rate=0.3, longest=40)
 
 
 def test_scans_one_by_one_give_the_states_when_asked() -> None:

@@ -13,7 +13,7 @@ from ladderworks.core.compiler.checks import implementation_of
 from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import layout, state_block
-from ladderworks.core.plc.native.helpers import differing
+from ladderworks.core.plc.native.helpers import grown
 from ladderworks.core.plc.native.ir_text import AREA_ORDER
 from ladderworks.core.plc.native.jit import Compiled, compiled_scan
 
@@ -210,29 +210,16 @@ class NativeScan:
         growth); None when anything else differs (the words compared in native code)."""
         if before == after:
             return []
-        first = self._state_at // 4
-        blocks: dict[int, list[int]] = {}
-        for index in differing(before, after):
-            word = first + index
-            offset = (word - self._first_block) % state_block.BLOCK
-            if word < self._first_block or offset < state_block.ELAPSED or \
-                    offset >= state_block.WAKE:
-                return None  # an edge memory, the flags or the wake: not a time value
-            blocks.setdefault(word - offset, []).append(offset)
-        growth = []
-        for base, offsets in blocks.items():
-            at = 4 * base - self._state_at
-            flags = int.from_bytes(after[at:at + 4], "little")
-            for offset, kept in ((state_block.ELAPSED, flags & state_block.ELAPSED_SET and
-                                  not flags & state_block.HAS_VALUE),
-                                 (state_block.AT, flags & state_block.HAS_AT)):
-                if offset not in offsets and offset + 1 not in offsets:
-                    continue
-                if not kept:
-                    return None
-                span = slice(at + 4 * offset, at + 4 * offset + 8)
-                growth.append((base, offset, int.from_bytes(after[span], "little", signed=True)
-                               - int.from_bytes(before[span], "little", signed=True)))
+        found = grown(before, after, len(self._edge_keys), len(self._blocks))
+        if found is None:
+            return None
+        growth, first = [], self._first_block
+        for block, elapsed, at in found:
+            base = first + state_block.BLOCK * block
+            if elapsed:
+                growth.append((base, state_block.ELAPSED, elapsed))
+            if at:
+                growth.append((base, state_block.AT, at))
         return growth
 
     def skip_wake(self, base: int) -> int | None:

@@ -72,6 +72,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "xmovb"
     if impl is timers.tmrb:
         return "tmrb"
+    if impl is timers.tmrc:
+        return "tmrc"
     if impl is timers.tmrbf:
         return "tmrbf"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
@@ -173,6 +175,50 @@ def _timer(b: Block, inputs: list[str], preset_of: Callable[[], str]) -> str:
     elapsed, new = _elapsed(b, flags)
     done, new = _reached(b, elapsed, preset_of(), new)
     b.set_flags(flags, f.value(f"or i32 {new}, {CHANGED}"))
+    on_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(joined)
+    w1 = f.value(f"phi i1 [false, %{off_end}], [{done}, %{on_end}]")
+    return f.value(f"zext i1 {w1} to i8")
+
+
+def _tmrc(b: Block, params: Sequence[object], inputs: list[str], dialect: str) -> str | None:
+    """TMRC: the preset (2 bytes, in units of its accuracy) read from memory, the elapsed
+    units written to its 4-byte register; a wake at the next unit (timers.tmrc)."""
+    accuracy, preset_at, register = params
+    if not isinstance(accuracy, int) or not _fits(preset_at, 2) or not _fits(register, 4) \
+            or dialect == "s7":  # the native loads are little-endian, as the PMC's memory
+        return None
+    assert isinstance(preset_at, Address) and isinstance(register, Address)
+    units_ms = timers.FANUC_TMRC_UNIT_MS if dialect == "fanuc" else timers.TMRC_UNIT_MS
+    unit = units_ms.get(accuracy, units_ms[0])
+    f = b.f
+    flags = b.flags()
+    on, off, joined = f.label(), f.label(), f.label()
+    f.add(f"br i1 {f.truth(inputs[-1])}, label %{on}, label %{off}")
+    f.start(off)  # elapsed = None, the register 0
+    b.set_flags(flags, f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_ELAPSED}')}, "
+                               f"{~ELAPSED_SET}"))
+    _store(f, register, 4, "0")
+    off_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(on)
+    elapsed, new = _elapsed(b, flags)
+    preset = f.value(f"zext i16 {_load(f, preset_at, 2)} to i64")
+    counted = f.value(f"udiv i64 {elapsed}, {unit}")
+    below = f.value(f"icmp slt i64 {counted}, {preset}")
+    units = f.value(f"select i1 {below}, i64 {counted}, i64 {preset}")
+    next_unit = f.value(f"sub i64 {f.value(f'add i64 {_time(f, layout.NOW)}, {unit}')}, "
+                        f"{f.value(f'urem i64 {elapsed}, {unit}')}")
+    wake = f.value(f"select i1 {below}, i64 {next_unit}, i64 {NEVER}")
+    b.store64(WAKE, wake)
+    scan_wake = _time(f, layout.WAKE)
+    earlier = f.value(f"icmp slt i64 {wake}, {scan_wake}")
+    f.add(f"store i64 {f.value(f'select i1 {earlier}, i64 {wake}, i64 {scan_wake}')}, "
+          f"ptr {f.word_ptr(layout.WAKE)}, align 4")
+    _store(f, register, 4, f.value(f"trunc i64 {units} to i32"))
+    b.set_flags(flags, f.value(f"or i32 {f.value(f'or i32 {new}, {HAS_WAKE}')}, {CHANGED}"))
+    done = f.value(f"xor i1 {below}, true")  # the preset reached
     on_end = f.block
     f.add(f"br label %{joined}")
     f.start(joined)
@@ -291,6 +337,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _tmr(block, params, inputs, dialect)
         if found == "tmrb":
             return _tmrb(block, params, inputs)
+        if found == "tmrc":
+            return _tmrc(block, params, inputs, dialect)
         if found == "tmrbf":
             return _tmrbf(block, params, inputs)
         if found == "xmovb":
