@@ -30,7 +30,6 @@ from ladderworks.core.plc.functions import NEVER, FunctionContext
 ACCUMULATORS = frozenset({"elapsed", "ms", "at"})
 MAX_PERIOD = 4  # the longest cycle looked for, in scans
 MAX_WAIT = 64  # scans between two tries at most, after tries whose states differed
-AT_OFFSET = 4  # native/state_block.AT: the word of the scan a native site last ran at
 ROUNDS = 2  # a state is compared with the one at the start of one or two rounds before
 
 Clock = tuple[int, int]  # (period, time on) in ms; on while time % period < time on
@@ -221,9 +220,9 @@ class CycleSkipper:
     def _wakes(self, growth: Growth, last_ms: int) -> list[int]:
         """The wake times of the timers whose time grows (`last_ms` for one without)."""
         found = [state.get("wake", last_ms) for state, key, _step in growth[0] if key != "at"]
-        for base, offset, _step in growth[1]:
-            if offset != AT_OFFSET:
-                wake = self.native.skip_wake(base)
+        for block, elapsed, _at in growth[1]:
+            if elapsed:
+                wake = self.native.skip_wake(block)
                 found.append(last_ms if wake is None else wake)
         return found
 

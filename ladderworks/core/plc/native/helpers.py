@@ -1,5 +1,6 @@
 """Small native functions every program shares, compiled once per process: the skipper's
-comparison of two copies of the state words (`grown`)."""
+comparison of two copies of the state words (`grown`) and its moving on of the time values
+it found growing (`move`)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,15 @@ import ctypes
 import threading
 from typing import Any
 
-from ladderworks.core.plc.native.state_block import ELAPSED_SET, HAS_AT, HAS_VALUE
+from ladderworks.core.plc.native import layout
+from ladderworks.core.plc.native.state_block import (
+    AT,
+    BLOCK,
+    ELAPSED,
+    ELAPSED_SET,
+    HAS_AT,
+    HAS_VALUE,
+)
 
 # grow(before, after, edges, blocks, out): two copies of the edge memories (`edges` words)
 # and the state blocks (`blocks` blocks of 8 words: flags, pad, elapsed, at, wake). -1 when
@@ -106,10 +115,68 @@ fail:
   ret i32 -1
 }}
 """
+# move(words, growth, count, times, first block, marks, changed list): each block's time
+# values grown `times` times their growth (`grow`'s triples), the block in the changed list
+_MOVE = f"""
+define void @move(ptr %st, ptr %g, i32 %count, i64 %times, i32 %first, i32 %marks,
+                  i32 %dirty) {{
+entry:
+  br label %loop
+loop:
+  %k = phi i32 [0, %entry], [%k1, %next]
+  %fin = icmp eq i32 %k, %count
+  br i1 %fin, label %exit, label %body
+body:
+  %o = mul i32 %k, 3
+  %p0 = getelementptr i64, ptr %g, i32 %o
+  %b64 = load i64, ptr %p0
+  %blk = trunc i64 %b64 to i32
+  %p1 = getelementptr i64, ptr %p0, i32 1
+  %de = load i64, ptr %p1
+  %p2 = getelementptr i64, ptr %p0, i32 2
+  %da = load i64, ptr %p2
+  %w = mul i32 %blk, {BLOCK}
+  %base = add i32 %first, %w
+  %we = add i32 %base, {ELAPSED}
+  %pe = getelementptr i32, ptr %st, i32 %we
+  %e = load i64, ptr %pe, align 4
+  %ge = mul i64 %de, %times
+  %e2 = add i64 %e, %ge
+  store i64 %e2, ptr %pe, align 4
+  %wa = add i32 %base, {AT}
+  %pa = getelementptr i32, ptr %st, i32 %wa
+  %a = load i64, ptr %pa, align 4
+  %ga = mul i64 %da, %times
+  %a2 = add i64 %a, %ga
+  store i64 %a2, ptr %pa, align 4
+  %mi = add i32 %marks, %blk
+  %pm = getelementptr i32, ptr %st, i32 %mi
+  %m = load i32, ptr %pm
+  %unmarked = icmp eq i32 %m, 0
+  br i1 %unmarked, label %list, label %next
+list:
+  store i32 1, ptr %pm
+  %pc = getelementptr i32, ptr %st, i32 {layout.DIRTY}
+  %c = load i32, ptr %pc
+  %di = add i32 %dirty, %c
+  %pd = getelementptr i32, ptr %st, i32 %di
+  store i32 %blk, ptr %pd
+  %c1 = add i32 %c, 1
+  store i32 %c1, ptr %pc
+  br label %next
+next:
+  %k1 = add i32 %k, 1
+  br label %loop
+exit:
+  ret void
+}}
+"""
+_MOVE_TYPE = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int32,
+                              ctypes.c_int64, ctypes.c_int32, ctypes.c_int32, ctypes.c_int32)
 _TYPE = ctypes.CFUNCTYPE(ctypes.c_int32, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_int32,
                          ctypes.c_int32, ctypes.c_void_p)
 _lock = threading.Lock()
-_made: list[Any] = []  # the engine and the function, once compiled
+_made: list[Any] = []  # the engine and the functions, once compiled
 _out: dict[int, Any] = {}  # an output buffer by its number of blocks
 
 
@@ -119,11 +186,7 @@ def grown(before: bytes, after: bytes, edges: int, blocks: int
     edge words and `blocks` state blocks), as (block, elapsed's growth, at's growth); None
     when anything else differs."""
     with _lock:
-        if not _made:
-            from ladderworks.core.plc.native.jit import compile_ir
-
-            engine, address, _ir, _llvm = compile_ir([_GROW], entry="grow")
-            _made.extend((engine, _TYPE(address)))
+        _make()
         out = _out.get(blocks)
         if out is None:
             out = _out[blocks] = (ctypes.c_int64 * (3 * max(1, blocks)))()
@@ -132,3 +195,23 @@ def grown(before: bytes, after: bytes, edges: int, blocks: int
             return None
         values = out[:3 * count]
     return [(values[k], values[k + 1], values[k + 2]) for k in range(0, 3 * count, 3)]
+
+
+def move(words: Any, growth: list[tuple[int, int, int]], times: int, first: int, marks: int,
+         dirty: int) -> None:
+    """Move the time values of the blocks in `growth` (`grown`'s) on by `times` times their
+    growth in the state words `words` (blocks from word `first`), each block put in the
+    changed list (`dirty`) unless its mark (`marks`) says it is there."""
+    flat = (ctypes.c_int64 * (3 * len(growth)))(*(v for entry in growth for v in entry))
+    with _lock:
+        _make()
+        _made[2](words, flat, len(growth), times, first, marks, dirty)
+
+
+def _make() -> None:
+    """Compile the helpers once (the lock held)."""
+    if not _made:
+        from ladderworks.core.plc.native.jit import compile_ir
+
+        engine, address, _ir, _llvm = compile_ir([_GROW + _MOVE], entry="grow")
+        _made.extend((engine, _TYPE(address), _MOVE_TYPE(engine.get_function_address("move"))))

@@ -13,7 +13,7 @@ from ladderworks.core.compiler.checks import implementation_of
 from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import layout, state_block
-from ladderworks.core.plc.native.helpers import grown
+from ladderworks.core.plc.native.helpers import grown, move
 from ladderworks.core.plc.native.ir_text import AREA_ORDER
 from ladderworks.core.plc.native.jit import Compiled, compiled_scan
 
@@ -206,40 +206,22 @@ class NativeScan:
 
     def skip_growth(self, before: bytes, after: bytes) -> list[tuple[int, int, int]] | None:
         """What the time values (a timer's elapsed time, the scan a site last ran at) grew by
-        from `before` to `after` (two `skip_state()`s), as (block's first word, offset,
-        growth); None when anything else differs (the words compared in native code)."""
+        from `before` to `after` (two `skip_state()`s), as (block, elapsed's growth, at's
+        growth); None when anything else differs (compared in native code)."""
         if before == after:
             return []
-        found = grown(before, after, len(self._edge_keys), len(self._blocks))
-        if found is None:
-            return None
-        growth, first = [], self._first_block
-        for block, elapsed, at in found:
-            base = first + state_block.BLOCK * block
-            if elapsed:
-                growth.append((base, state_block.ELAPSED, elapsed))
-            if at:
-                growth.append((base, state_block.AT, at))
-        return growth
+        return grown(before, after, len(self._edge_keys), len(self._blocks))
 
-    def skip_wake(self, base: int) -> int | None:
+    def skip_wake(self, block: int) -> int | None:
         """The wake time a block's state says, or None."""
-        words = self._words
+        words, base = self._words, self._first_block + state_block.BLOCK * block
         return state_block._get64(words, base + state_block.WAKE) \
             if words[base] & state_block.HAS_WAKE else None
 
     def skip_move(self, growth: list[tuple[int, int, int]], times: int) -> None:
         """Move the time values on by `times` times their growth (the skipped scans'), the
         blocks then in the changed list (the dicts get them at the next `sync`)."""
-        words, marks, dirty = self._words, self._marks, self._dirty
-        for base, offset, step in growth:
-            state_block._set64(words, base + offset,
-                               state_block._get64(words, base + offset) + step * times)
-            number = (base - self._first_block) // state_block.BLOCK
-            if not words[marks + number]:
-                words[marks + number] = 1
-                words[dirty + words[layout.DIRTY]] = number
-                words[layout.DIRTY] += 1
+        move(self._words, growth, times, self._first_block, self._marks, self._dirty)
         self._unsynced = True
 
     def sync(self) -> None:
