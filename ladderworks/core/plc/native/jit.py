@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import hashlib
 import queue
+import re
 import struct
 import threading
 import time
@@ -24,7 +25,7 @@ from ladderworks.core.plc.native.generator import NativeProgram, generate_parts
 # passes (SROA for the dispatch loops' slots, CFG simplification): instcombine alone took 5 s.
 CODEGEN_LEVEL = 0
 PASSES = ("sroa", "simplify_cfg")
-# the passes run on the units' functions (U<n>: the dispatch loops' slots) only: on the chunk
+# the passes run on the functions with slots (a unit's dispatch loop) only: on the chunk
 # functions they took 0.1-0.3 s of X22's cold compile and left the scan as fast (23 against
 # 24 µs, one run); True runs them on every function (benchmarks/native_compile.py, "before")
 CHUNK_PASSES = False
@@ -32,6 +33,8 @@ CHUNK_PASSES = False
 # the tests turn it on (tests/core/plc/conftest.py); the generator's IR is the same for a user
 VERIFY = False
 CACHED = 8  # compiled variants kept in memory
+_SLOTTED = re.compile(r"^define \w+ @(\w+)\(.*\{\nentry:\n  %v0 = alloca", re.M)
+_FUNCTIONS = re.compile(r"^define \w+ @(\w+)\(", re.M)
 _lock = threading.Lock()
 _cache: OrderedDict[tuple[str, bool, frozenset[int]], Compiled] = OrderedDict()
 _ready: list[bool] = []
@@ -86,9 +89,11 @@ def _object(machine: Any, text: str) -> bytes:
     passes = llvm.create_new_function_pass_manager()
     for name in PASSES:
         getattr(passes, f"add_{name}_pass")()
-    for function in module.functions:
-        if not function.is_declaration and (CHUNK_PASSES or function.name.startswith("U")):
-            passes.run(function, builder)
+    # by name, found in the text: a walk over the module's functions would take Python's
+    # lock some 2,000 times from the thread making the IR (jit.compile_ir)
+    names = _FUNCTIONS.findall(text) if CHUNK_PASSES else _SLOTTED.findall(text)
+    for name in names:
+        passes.run(module.get_function(name), builder)
     return bytes(machine.emit_object(module))
 
 

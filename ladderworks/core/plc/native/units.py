@@ -15,7 +15,7 @@ def unit_function(number: int, unit: Unit, chunks: list[str], commons: range, ju
     """The function `U<n>` of a unit: its JMP id and COM gates reset, then its chunks in
     order, or (with labels) a dispatch loop over them that counts backward jumps and catches
     a JMPC of its level."""
-    f = FunctionText(f"U{number}", "void", slots=2)
+    f = FunctionText(f"U{number}", "void", slots=2 if labelled else 0)
     if jumps:
         f.store_word(places.jump_base + number, "0")
     for ident in commons:
