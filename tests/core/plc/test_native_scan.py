@@ -14,6 +14,7 @@ compares and arithmetic, forces and disabled elements, monitored or not.
 
 from __future__ import annotations
 
+import ctypes
 import random
 from pathlib import Path
 
@@ -442,8 +443,9 @@ def test_an_unknown_sub_is_the_cnc_stub_natively() -> None:
 
 
 def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
-    """After a skip the native scan writes the states the skipper moved on into their words
-    (not every block and edge memory): the timers then close at the Python scan's time."""
+    """The skipper moves the native timers on in their state words (native/helpers.py), not
+    in the dicts: the timers then close at the Python scan's time, and the dicts have them
+    when read."""
     text = "%@3\nRD X0.0\nTMRB 1 4000\nWRT Y0.0\nRD X0.0\nTMRB 2 9000\nWRT Y0.1\n" \
            "RD X0.1\nDIFU 3\nWRT Y0.2\n%\n"
     python, native = pair(binary_of(text))
@@ -456,3 +458,39 @@ def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
         assert native._ctx.edges == python._ctx.edges
         assert native.memory.areas == python.memory.areas, until
     assert native.skipped > 1000  # the timers ran on through skips
+
+
+def test_the_skippers_native_comparison_finds_time_values_only() -> None:
+    """`helpers.grown` gives the blocks whose elapsed time or last scan grew; anything else
+    differing (an edge memory, the flags, the wake, CTRB's value, an elapsed time not set) is
+    no repeat. `helpers.move` moves them on and lists each block once."""
+    from ladderworks.core.plc.native import helpers, layout, state_block
+
+    def state(edges: list[int], blocks: list[tuple[int, int, int, int]]) -> bytes:
+        words = list(edges)
+        for flags, elapsed, at, wake in blocks:
+            words += [flags, 0, elapsed, 0, at, 0, wake, 0]
+        return b"".join(w.to_bytes(4, "little", signed=True) for w in words)
+
+    timing = state_block.HAS_ELAPSED | state_block.ELAPSED_SET | state_block.HAS_AT
+    counter = state_block.HAS_VALUE | state_block.HAS_ELAPSED | state_block.ELAPSED_SET
+    before = state([3, 2], [(timing, 40, 800, 5000), (counter, 7, 0, 0), (0, 0, 0, 0)])
+    later = state([3, 2], [(timing, 56, 816, 5000), (counter, 7, 0, 0), (0, 0, 0, 0)])
+    assert helpers.grown(before, later, 2, 3) == [(0, 16, 16)]
+    assert helpers.grown(before, before, 2, 3) == []
+    for changed in (state([3, 3], [(timing, 56, 816, 5000), (counter, 7, 0, 0), (0, 0, 0, 0)]),
+                    state([3, 2], [(timing | 32, 56, 816, 5000), (counter, 7, 0, 0),
+                                   (0, 0, 0, 0)]),
+                    state([3, 2], [(timing, 56, 816, 5016), (counter, 7, 0, 0), (0, 0, 0, 0)]),
+                    state([3, 2], [(timing, 40, 800, 5000), (counter, 8, 0, 0), (0, 0, 0, 0)]),
+                    state([3, 2], [(timing, 40, 800, 5000), (counter, 7, 0, 0), (0, 1, 0, 0)])):
+        assert helpers.grown(before, changed, 2, 3) is None
+    first, marks, dirty = 30, 60, 70
+    words = (ctypes.c_int32 * 80)()
+    helpers.move(words, [(0, 16, 16), (2, 0, 8)], 10, first, marks, dirty)
+    helpers.move(words, [(0, 16, 16)], 1, first, marks, dirty)
+    assert state_block._get64(words, first + state_block.ELAPSED) == 176
+    assert state_block._get64(words, first + state_block.AT) == 176
+    assert state_block._get64(words, first + 16 + state_block.AT) == 80
+    assert words[layout.DIRTY] == 2 and list(words[dirty:dirty + 2]) == [0, 2]
+    assert (words[marks], words[marks + 1], words[marks + 2]) == (1, 0, 1)
