@@ -5,9 +5,11 @@ figures and, per figure, the best and the median of each tree. Asserts nothing.
 
     python benchmarks/native_before_after.py [--rounds N] compile [PROGRAM ...]
     python benchmarks/native_before_after.py [--rounds N] scenarios [--duration S] [--programs X22]
+    python benchmarks/native_before_after.py [--rounds N] scan
 
 `compile` runs native_compile.py (one cold compile a round: CPU and wall seconds); `scenarios`
-runs native_scenarios.py with the native backend (× real time by wall and by CPU time).
+runs native_scenarios.py with the native backend (× real time by wall and by CPU time); `scan`
+runs native_scan.py --native-only (µs per native scan, fast and monitored).
 """
 
 from __future__ import annotations
@@ -22,6 +24,8 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 COMPILE = re.compile(r"^(\S+): \d+ steps, cold compile ([\d.]+) s CPU, ([\d.]+) s wall")
+NAMED = re.compile(r"^(\S+): \d+ steps")
+SPEED = re.compile(r"^  native\s+(fast|monitored)\s+([\d.]+)")
 SCENARIO = re.compile(r"^(\S+)\s+native\s+(\d+) s (every scan|skipping)\s+\d+ s\s+[\d.]+ s\s+"
                       r"(\d+)x\s+[\d.]+ s\s+(\d+)x")
 
@@ -29,7 +33,12 @@ SCENARIO = re.compile(r"^(\S+)\s+native\s+(\d+) s (every scan|skipping)\s+\d+ s\
 def figures(kind: str, output: str) -> dict[str, float]:
     """The figures of one round's output, by name."""
     found: dict[str, float] = {}
+    program = ""
     for line in output.splitlines():
+        if kind == "scan" and (match := NAMED.match(line)):
+            program = match[1]
+        if kind == "scan" and (match := SPEED.match(line)):
+            found[f"{program} native {match[1]} µs"] = float(match[2])
         if kind == "compile" and (match := COMPILE.match(line)):
             found[f"{match[1]} CPU s"] = float(match[2])
             found[f"{match[1]} wall s"] = float(match[3])
@@ -45,11 +54,12 @@ def main() -> int:
     parser.add_argument("--before", default="/work/main")
     parser.add_argument("--after", default=str(HERE.parent))
     parser.add_argument("--rounds", type=int, default=3)
-    parser.add_argument("kind", choices=("compile", "scenarios"))
+    parser.add_argument("kind", choices=("compile", "scenarios", "scan"))
     args, rest = parser.parse_known_args()
-    script = HERE / ("native_compile.py" if args.kind == "compile" else "native_scenarios.py")
-    extra = ["--rounds", "1", *rest] if args.kind == "compile" else \
-        ["--backends", "native", *rest]
+    script = HERE / {"compile": "native_compile.py", "scenarios": "native_scenarios.py",
+                     "scan": "native_scan.py"}[args.kind]
+    extra = {"compile": ["--rounds", "1", *rest], "scenarios": ["--backends", "native", *rest],
+             "scan": ["--native-only", *rest]}[args.kind]
     trees = {"before": args.before, "after": args.after}
     results: dict[str, dict[str, list[float]]] = {name: {} for name in trees}
     for round_ in range(args.rounds):
@@ -70,7 +80,8 @@ def main() -> int:
         row = []
         for name in trees:
             values = results[name].get(key, [])
-            best = (min if key.endswith(" s") else max)(values) if values else float("nan")
+            lower = key.endswith((" s", " µs"))  # times: the least is best
+            best = (min if lower else max)(values) if values else float("nan")
             row += [best, statistics.median(values) if values else float("nan")]
         print(f"{key:55} {row[0]:11.2f} {row[1]:7.2f} {row[2]:10.2f} {row[3]:7.2f}")
     return 0
