@@ -188,7 +188,7 @@ class Scanner:
                   frame: list[tuple[bytearray, memoryview]], flow: memoryview,
                   block: memoryview, period: float, next_start: float) -> None:
         """Scan every period until told to stop."""
-        served = 0
+        served = behind = 0
         while self.wait(next_start):
             began = time.perf_counter()
             self.header_time(next_start, 1)
@@ -220,6 +220,11 @@ class Scanner:
             self.figures.add(now - began, cpu, began - due, late)
             if late:
                 next_start = now
+                behind += now - began > period  # the scan itself longer than its period
+                if behind == LONG_SCANS:  # the logic cannot keep up: scanning back to back
+                    normal_priority()  # at a real-time priority would starve the IDE
+            else:
+                behind = 0
             self.header_time(next_start, 0)
             self.send_outputs(engine)
 
@@ -278,6 +283,7 @@ class Scanner:
 
 RT_PRIORITY = 10  # SCHED_RR's priority: above every normal process, below the kernel's own
 _NICE: list[int] = []  # the nice value before `raise_priority` lowered it
+LONG_SCANS = 3  # scans in a row longer than the period: back to normal priority for the run
 
 
 def normal_priority() -> None:
