@@ -168,8 +168,8 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nDCNVB 2 D0 D4\n"
-                       "WRT Y0.0\n")  # DCNVB: called back
+    binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nPARI D0\n"
+                       "WRT Y0.0\n")  # PARI: called back
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
     assert len(engine._current.callbacks) == 1
@@ -326,6 +326,30 @@ def test_tmrc_reads_its_preset_and_writes_its_register_as_the_python_scan_does(
     presets = [Address(Area.D, byte) for byte in (0, 1, 2, 12)]  # small presets: reached
     driver = Driver(engines, random.Random(7), bytes_of(Area.X, 1), presets, [])
     driver.run(1500, rate=0.3, longest=40)
+
+
+def test_dcnvb_converts_as_the_python_scan_does() -> None:
+    """Binary <-> BCD of 1, 2 and 4 bytes: signs, invalid digits, values too large, RST and
+    ACT; the target, R9000 and W1 as in Python."""
+    text = "".join(f"RD X{k}.0\nRD.STK X{k}.1\nRD.STK X{k}.2\nRD.STK X{k}.3\n"
+                   f"DCNVB {width} D{8 * k} D{8 * k + 4}\nWRT Y0.{k}\n"
+                   for k, width in enumerate((1, 2, 4)))
+    engines = pair(binary_of("%@3\n" + text + "%\n"))
+    assert engines[1]._current.callbacks == []
+    sources = [Address(Area.D, 8 * k + byte) for k in range(3) for byte in range(4)]
+    driver = Driver(engines, random.Random(11), bytes_of(Area.X, 3), sources, [])
+    driver.run(1500, rate=0.5, longest=10)
+    rng = random.Random(12)
+    for _ in range(400):  # every scan with new data: BCD digits valid or not, signs
+        data = bytes(rng.choice((0x99, 0x12, 0x9A, 0x80, 0xFF, 0x00, rng.randrange(256)))
+                     for _ in range(24))
+        inputs = bytes(rng.randrange(16) for _ in range(3))
+        for engine in engines:
+            engine.memory.areas[Area.D][:24] = data
+            engine.memory.areas[Area.X][:3] = inputs
+            engine.scan()
+        assert engines[0].memory.areas == engines[1].memory.areas
+        assert engines[1].call_states() == engines[0].call_states()
 
 
 def test_scans_one_by_one_give_the_states_when_asked() -> None:

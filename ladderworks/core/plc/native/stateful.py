@@ -45,7 +45,7 @@ from ladderworks.core.plc.native.state_block import (
     _load,
     _store,
 )
-from ladderworks.core.plc.native.tables import _codb, _counter, _xmovb
+from ladderworks.core.plc.native.tables import _codb, _counter, _dcnvb, _xmovb
 
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
@@ -66,6 +66,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "tmr"
     if impl is convert.codb:
         return "codb"
+    if impl is convert.dcnvb:
+        return "dcnvb"
     if impl in (counters.ctr, counters.ctrc, counters.ctrb):
         return "counter"
     if impl is transfer.xmovb:
@@ -345,6 +347,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _xmovb(block, params, inputs)
         if found == "counter":
             return _counter(block, impl, params, inputs)
+        if found == "dcnvb":
+            return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
         if found == "arithmetic":
