@@ -190,12 +190,6 @@ class _Generator:
             self.out = []
             yield text
 
-    def run(self) -> NativeProgram:
-        for _ in self.parts():
-            pass
-        assert self.program is not None
-        return self.program
-
     def unit(self, unit: Unit) -> Generator[str, None, int]:
         number = self.unit_numbers[unit.name]
         self.unit_number = number
@@ -479,13 +473,6 @@ class _Generator:
         f.add("ret i32 -1")
         f.start(going)
         return f.value(f"trunc i32 {result} to i8")
-
-
-def generate_ir(ops: tuple[Op, ...], registry: dict[str, FunctionImpl], *,
-                disabled: Collection[int] = (), monitored: bool = False,
-                dialect: str = "seed") -> NativeProgram:
-    """The native scan's IR text for `ops` (the variant of `disabled` ops and monitoring)."""
-    return _Generator(ops, registry, frozenset(disabled), monitored, dialect).run()
 
 
 def generate_parts(ops: tuple[Op, ...], registry: dict[str, FunctionImpl], *,
