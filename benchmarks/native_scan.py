@@ -9,6 +9,7 @@ same state, the inputs set as a running machine might have them); a scenario-lik
 (`advance` over VIRTUAL_S seconds of virtual time, inputs changing every second, scans skipped
 where the state repeats, and every scan) as a factor of real time; and the instructions that
 still call back into Python (by name, with their call sites). Prints figures; asserts nothing.
+`--native-only`: the native scan's µs per scan alone (benchmarks/native_before_after.py).
 """
 
 from __future__ import annotations
@@ -83,6 +84,18 @@ def scenario_factor(binary: BinaryProgram, backend: str, inputs: list[Address],
     return VIRTUAL_S / (time.perf_counter() - started)
 
 
+def native_only(name: str) -> None:
+    """The native scan's µs per scan, fast and monitored."""
+    binary = load(name)
+    engine = ScanEngine(binary, backend="native")
+    drive(engine, inputs_of(binary), 1)
+    print(f"\n{name}: {len(binary.ops)} steps")
+    for mode in (False, True):
+        us = scan_us(engine, mode)
+        print(f"  native   {'monitored' if mode else 'fast':10} {us:9.1f} "
+              f"{us * 1000 / len(binary.ops):8.2f}")
+
+
 def report(name: str) -> None:
     binary = load(name)
     steps = len(binary.ops)
@@ -142,8 +155,12 @@ def main() -> int:
         print(f"shared/real-programs is missing ({SHARED})")
         return 1
     os.environ["LADDERWORKS_NATIVE_CACHE"] = tempfile.mkdtemp(prefix="native-bench-")
-    for name in (sys.argv[1:] or PROGRAMS):
-        report(name)
+    names = [arg for arg in sys.argv[1:] if not arg.startswith("--")]
+    for name in (names or PROGRAMS):
+        if "--native-only" in sys.argv:
+            native_only(name)
+        else:
+            report(name)
     return 0
 
 

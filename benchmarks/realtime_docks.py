@@ -29,7 +29,9 @@ busy machine do not show in the figures (the GUI and scan threads still share th
 Environment, for experiments: SETS="technician" (the dock sets to run), SHARE=0.15 (the GUI
 thread's share, `snapshot_gate.SHARE`), MODES="gate paced" (the modes to run), SWITCH_MS=1
 (the interpreter's switch interval, `sys.setswitchinterval`), PROFILE=1 (cProfile of the GUI
-thread per set), BACKEND=native (the scan's code: PLC › Native scan checked; python by default).
+thread per set), BACKEND=native (the scan's code: PLC › Native scan checked; python by default),
+LADDERWORKS_SCAN_PRIORITY=normal (the scan process keeps its priority: `scan_process.
+raise_priority`). The last column says how the system schedules the scan process while it runs.
 """
 
 from __future__ import annotations
@@ -132,6 +134,12 @@ def measure(mode: str, seconds: float) -> None:
             if session.run.process_error:
                 raise SystemExit(f"the scan process failed: {session.run.process_error}")
         start_s = time.perf_counter() - began
+        priority = ""
+        if isinstance(session.run._runner, ProcessRunner) and hasattr(os, "sched_getscheduler"):
+            pid = session.run._runner.process.process.pid
+            priority = {os.SCHED_OTHER: f"nice {os.getpriority(os.PRIO_PROCESS, pid)}",
+                        os.SCHED_RR: "round-robin", os.SCHED_FIFO: "FIFO"}.get(
+                            os.sched_getscheduler(pid), "other")
         if watching:
             docks.time_chart.start()
         runner = session.run._runner
@@ -175,7 +183,7 @@ def measure(mode: str, seconds: float) -> None:
         print(f"{mode:6}  {name:10}  {stats.scans:6}  "
               f"{stats.overruns:8}  {stats.max_ms:8.1f}  {stats.avg_ms:6.2f}  "
               f"{stats.cpu_avg_ms:6.2f}  {stats.late_max_ms:8.1f}  {gui:5.0f} %  "
-              f"{start_s:7.2f}", flush=True)
+              f"{start_s:7.2f}  {priority}", flush=True)
     session.close()
 
 
@@ -197,7 +205,7 @@ def main() -> None:
     print(f"{PROGRAM}: 8 ms scans on the wall clock, {args.seconds:.0f} s per dock set after "
           f"the first second{' (SCHED_FIFO)' if args.fifo else ''}")
     print("mode    docks        scans  overruns  worst ms  avg ms  cpu ms  late max  GUI thread"
-          "  start s")
+          "  start s  scan process")
     for mode in MODES:
         subprocess.run([sys.executable, __file__, str(args.seconds), "--mode", mode],
                        check=True)

@@ -259,9 +259,10 @@ class ScanEngine:
                 if self._clocks_split is None:
                     read = clocks_read(self.program.ops, self._clocks, self.program.dialect)
                     self._clocks_split = read, tuple(c for c in self._clocks if c not in read)
+                native = self._current if hasattr(self._current, "skip_state") else None
                 skipper = CycleSkipper(self.memory.areas, self._current.states, self._ctx,
                                        self._clocks_split[0], self.period_ms, self.divisions,
-                                       self._clocks_split[1])
+                                       self._clocks_split[1], native)
             count = 0
             while self.now_ms < limit_ms:
                 self.scan()
@@ -269,15 +270,17 @@ class ScanEngine:
                 if until is not None and until():
                     break
                 if skipper is not None:
-                    self._current.sync()  # the skipper reads the call sites' states
+                    if skipper.native is None:
+                        self._current.sync()  # the skipper reads the call sites' states
                     skipped = skipper.after_scan(self.now_ms, limit_ms, self.alarm_changes)
                     if skipped:
                         self.now_ms += skipped * self.period_ms
                         self.scan_count += skipped
                         self.skipped += skipped
                         count += skipped
-                        # the skipper moved these timers on (nothing else changed since sync)
-                        self._current.states_changed(skipper.moved)
+                        if skipper.native is None:
+                            # it moved these timers on (nothing else changed since sync)
+                            self._current.states_changed(skipper.moved)
                         self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
                         self.force_table.apply(self.memory)  # forces win, as after a scan
             self._current.sync()

@@ -34,7 +34,10 @@ ROUNDS = 2  # a state is compared with the one at the start of one or two rounds
 
 Clock = tuple[int, int]  # (period, time on) in ms; on while time % period < time on
 ClockRelay = tuple[Address, int, int]  # a clock's bit, period and time on
-Hidden = tuple[list[dict[str, Any]], dict[Any, bool], tuple[Any, ...]]
+# the states' copies (or the live ones), the edge memories, what was sent, the native
+# scan's state words (b"" for the Python scan)
+Hidden = tuple[list[dict[str, Any]], dict[Any, bool], tuple[Any, ...], bytes]
+Growth = tuple[list[tuple[dict[str, Any], str, int]], list[tuple[int, int, int]]]
 
 
 def clock_change(after_ms: int, scan_ms: int, clocks: Iterable[Clock], limit_ms: int) -> int:
@@ -56,13 +59,31 @@ def clock_change(after_ms: int, scan_ms: int, clocks: Iterable[Clock], limit_ms:
     return best
 
 
-def clocks_read(ops: Iterable[Op], clocks: Iterable[ClockRelay], dialect: str
+_READ: dict[tuple[int, tuple[ClockRelay, ...], str],
+            tuple[tuple[Op, ...], tuple[ClockRelay, ...]]] = {}
+
+
+def clocks_read(ops: tuple[Op, ...], clocks: Iterable[ClockRelay], dialect: str
                 ) -> tuple[ClockRelay, ...]:
     """The clocks whose bit an op reads (or may: an operand on it, a parameter whose extent
-    covers its byte, by the instruction table's widths); the others cannot change a scan."""
+    covers its byte, by the instruction table's widths); the others cannot change a scan.
+    Kept for the last few programs (a scenario's next engine of the same binary)."""
+    clocks = tuple(clocks)
+    key = (id(ops), clocks, dialect)
+    kept = _READ.get(key)
+    if kept is not None and kept[0] is ops:
+        return kept[1]
+    found = _clocks_read(ops, clocks, dialect)
+    if len(_READ) >= 4:
+        _READ.pop(next(iter(_READ)))
+    _READ[key] = ops, found
+    return found
+
+
+def _clocks_read(ops: Iterable[Op], clocks: tuple[ClockRelay, ...], dialect: str
+                 ) -> tuple[ClockRelay, ...]:
     from ladderworks.core.xref import function_operands
 
-    clocks = tuple(clocks)
     found: set[ClockRelay] = set()
     for op in ops:
         operand = op.operand
@@ -99,14 +120,18 @@ class CycleSkipper:
 
     After each scan it keeps the state (memory as one bytes object, copies of the call sites'
     states that hold anything) of the last `MAX_PERIOD` scans; a scan whose state equals one
-    of those (timers' time aside) closes a cycle.
+    of those (timers' time aside) closes a cycle. With a native scan (`native`: its
+    `skip_*` methods, native/scan.py) the states in its state words are kept as one bytes
+    object and moved on there; only the call-backs' states are dicts.
     """
 
     def __init__(self, areas: Mapping[Area, bytearray], states: tuple[dict[str, Any], ...],
                  ctx: FunctionContext, clocks: tuple[ClockRelay, ...], period_ms: int,
-                 divisions: int = 1, unread: tuple[ClockRelay, ...] = ()) -> None:
+                 divisions: int = 1, unread: tuple[ClockRelay, ...] = (),
+                 native: Any = None) -> None:
         self._areas = tuple(areas.values())
-        self._states = states
+        self.native = native
+        self._states = native.callback_states() if native is not None else states
         self._ctx = ctx
         self._clocks = tuple((period, on) for _bit, period, on in clocks)
         offsets, at = {}, 0
@@ -128,6 +153,8 @@ class CycleSkipper:
         self._track()
         self._wait = 0  # scans before the next try
         self._misses = 0  # tries in a row whose states differed
+        # the native scan's states cost little to keep and compare: a try after every scan
+        self._max_wait = 0 if native is not None else MAX_WAIT
         self.moved: list[dict[str, Any]] = []  # the states the last skip moved on
 
     def _track(self) -> None:
@@ -144,7 +171,8 @@ class CycleSkipper:
         ctx = self._ctx
         sent = tuple(getattr(value, "writes", None) for value in ctx.extra.values())
         held = list(self._held) if live else [state.copy() for state in self._held]
-        return held, dict(ctx.edges), sent
+        words = self.native.skip_state() if self.native is not None else b""
+        return held, dict(ctx.edges), sent, words
 
     def after_scan(self, next_ms: int, limit_ms: int, alarms: int) -> int:
         """Called after each scan (`next_ms` the next scan's time, `alarms` the count of A-area
@@ -178,12 +206,34 @@ class CycleSkipper:
         ring.append(seen)
         return 0
 
-    def _skip(self, growth: list[tuple[dict[str, Any], str, int]], times: int) -> None:
+    def _grown(self, before: Hidden) -> Growth | None:
+        """What the time values grew by since `before`, or None when anything else differs."""
+        after = self._hidden(live=True)
+        growth = _growth(before, after)
+        if growth is None:
+            return None
+        if self.native is None:
+            return growth, []
+        words = self.native.skip_growth(before[3], after[3])
+        return None if words is None else (growth, words)
+
+    def _wakes(self, growth: Growth, last_ms: int) -> list[int]:
+        """The wake times of the timers whose time grows (`last_ms` for one without)."""
+        found = [state.get("wake", last_ms) for state, key, _step in growth[0] if key != "at"]
+        for block, elapsed, _at in growth[1]:
+            if elapsed:
+                wake = self.native.skip_wake(block)
+                found.append(last_ms if wake is None else wake)
+        return found
+
+    def _skip(self, growth: Growth, times: int) -> None:
         """Move each time key on by `times` times its growth; the scans kept are past (a
         round's marks are, too: the next round's start is no longer one round after them)."""
-        for state, key, step in growth:
+        for state, key, step in growth[0]:
             state[key] += step * times
-        self.moved = [state for state, _key, _step in growth]
+        if growth[1]:
+            self.native.skip_move(growth[1], times)
+        self.moved = [state for state, _key, _step in growth[0]]
         self._ring.clear()
 
     def _close_round(self, seen: _Seen, limit_ms: int) -> int:
@@ -205,12 +255,11 @@ class CycleSkipper:
             if any(self._empty):
                 self._track()
                 return 0
-            growth = _growth(mark.hidden, self._hidden(live=True))
+            growth = self._grown(mark.hidden)
             if growth is None:
                 continue
             span = back * self._round
-            horizon = min([limit_ms, *(state.get("wake", last_ms)
-                                       for state, key, _step in growth if key != "at")])
+            horizon = min([limit_ms, *self._wakes(growth, last_ms)])
             spans = max(0, (horizon - 1 - last_ms) // span)  # a timer that said nothing: 0
             if not spans:
                 break
@@ -232,10 +281,10 @@ class CycleSkipper:
             if any(self._empty):  # a call site ran for the first time: copy it from now on
                 self._track()
             else:
-                growth = _growth(first.hidden, self._hidden(live=True))
+                growth = self._grown(first.hidden)
         if growth is None:
             self._misses += 1
-            self._wait = min(MAX_WAIT, (1 << self._misses) - 1)
+            self._wait = min(self._max_wait, (1 << self._misses) - 1)
             return 0
         self._misses = 0
         wakes = min([seen.wake_ms, *(kept.wake_ms for kept in list(ring)[-length:])])
@@ -251,8 +300,8 @@ class CycleSkipper:
 def _growth(before: Hidden, after: Hidden) -> list[tuple[dict[str, Any], str, int]] | None:
     """What each accumulator grew by from `before` to `after` (the states of `after` are the
     live ones), or None when anything else differs."""
-    states, edges, sent = before
-    live, edges_after, sent_after = after
+    states, edges, sent, _words = before
+    live, edges_after, sent_after, _words_after = after
     if edges != edges_after or sent != sent_after:
         return None
     growth = []

@@ -12,6 +12,9 @@ from ladderworks.core.il import Instruction, Network, Program, parse, parse_file
 from ladderworks.core.il.program import ParamValue
 from ladderworks.core.instructions import Combine, Kind, spec_for
 from ladderworks.core.plc.engine import ScanEngine
+from ladderworks.core.plc.native import jit
+
+jit.VERIFY = True  # LLVM's verifier on every module the native tests compile
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "resources" / "examples"
 

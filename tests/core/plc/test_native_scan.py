@@ -14,6 +14,7 @@ compares and arithmetic, forces and disabled elements, monitored or not.
 
 from __future__ import annotations
 
+import ctypes
 import random
 from pathlib import Path
 
@@ -167,7 +168,8 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    binary = binary_of("RD X0.0\nTMRC 0 D0 D4\nWRT Y0.0\n")  # TMRC: called back
+    binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nPARI D0\n"
+                       "WRT Y0.0\n")  # PARI: called back
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
     assert len(engine._current.callbacks) == 1
@@ -313,6 +315,43 @@ def test_tmr_reads_its_preset_and_precision_as_the_python_scan_does(header: str)
     driver.run(2000, rate=0.3, longest=40)
 
 
+@pytest.mark.parametrize("header", ["%@3\n", ""], ids=["fanuc", "seed"])
+def test_tmrc_reads_its_preset_and_writes_its_register_as_the_python_scan_does(
+        header: str) -> None:
+    text = "RD X0.0\nTMRC 0 D0 D4\nWRT Y0.0\nRD X0.1\nTMRC 1 D2 D8\nWRT Y0.1\n" \
+           "RD X0.2\nTMRC 6 D12 D14\nWRT Y0.2\n"
+    binary = binary_of(header + text + ("%\n" if header else ""))
+    engines = pair(binary)
+    assert engines[1]._current.callbacks == []
+    presets = [Address(Area.D, byte) for byte in (0, 1, 2, 12)]  # small presets: reached
+    driver = Driver(engines, random.Random(7), bytes_of(Area.X, 1), presets, [])
+    driver.run(1500, rate=0.3, longest=40)
+
+
+def test_dcnvb_converts_as_the_python_scan_does() -> None:
+    """Binary <-> BCD of 1, 2 and 4 bytes: signs, invalid digits, values too large, RST and
+    ACT; the target, R9000 and W1 as in Python."""
+    text = "".join(f"RD X{k}.0\nRD.STK X{k}.1\nRD.STK X{k}.2\nRD.STK X{k}.3\n"
+                   f"DCNVB {width} D{8 * k} D{8 * k + 4}\nWRT Y0.{k}\n"
+                   for k, width in enumerate((1, 2, 4)))
+    engines = pair(binary_of("%@3\n" + text + "%\n"))
+    assert engines[1]._current.callbacks == []
+    sources = [Address(Area.D, 8 * k + byte) for k in range(3) for byte in range(4)]
+    driver = Driver(engines, random.Random(11), bytes_of(Area.X, 3), sources, [])
+    driver.run(1500, rate=0.5, longest=10)
+    rng = random.Random(12)
+    for _ in range(400):  # every scan with new data: BCD digits valid or not, signs
+        data = bytes(rng.choice((0x99, 0x12, 0x9A, 0x80, 0xFF, 0x00, rng.randrange(256)))
+                     for _ in range(24))
+        inputs = bytes(rng.randrange(16) for _ in range(3))
+        for engine in engines:
+            engine.memory.areas[Area.D][:24] = data
+            engine.memory.areas[Area.X][:3] = inputs
+            engine.scan()
+        assert engines[0].memory.areas == engines[1].memory.areas
+        assert engines[1].call_states() == engines[0].call_states()
+
+
 def test_scans_one_by_one_give_the_states_when_asked() -> None:
     """`scan()` (the real-time runner's) leaves the native states in their words; they reach
     the dicts when read: call_states(), export_state(), a variant switch, `advance`."""
@@ -428,8 +467,9 @@ def test_an_unknown_sub_is_the_cnc_stub_natively() -> None:
 
 
 def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
-    """After a skip the native scan writes the states the skipper moved on into their words
-    (not every block and edge memory): the timers then close at the Python scan's time."""
+    """The skipper moves the native timers on in their state words (native/helpers.py), not
+    in the dicts: the timers then close at the Python scan's time, and the dicts have them
+    when read."""
     text = "%@3\nRD X0.0\nTMRB 1 4000\nWRT Y0.0\nRD X0.0\nTMRB 2 9000\nWRT Y0.1\n" \
            "RD X0.1\nDIFU 3\nWRT Y0.2\n%\n"
     python, native = pair(binary_of(text))
@@ -442,3 +482,39 @@ def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
         assert native._ctx.edges == python._ctx.edges
         assert native.memory.areas == python.memory.areas, until
     assert native.skipped > 1000  # the timers ran on through skips
+
+
+def test_the_skippers_native_comparison_finds_time_values_only() -> None:
+    """`helpers.grown` gives the blocks whose elapsed time or last scan grew; anything else
+    differing (an edge memory, the flags, the wake, CTRB's value, an elapsed time not set) is
+    no repeat. `helpers.move` moves them on and lists each block once."""
+    from ladderworks.core.plc.native import helpers, layout, state_block
+
+    def state(edges: list[int], blocks: list[tuple[int, int, int, int]]) -> bytes:
+        words = list(edges)
+        for flags, elapsed, at, wake in blocks:
+            words += [flags, 0, elapsed, 0, at, 0, wake, 0]
+        return b"".join(w.to_bytes(4, "little", signed=True) for w in words)
+
+    timing = state_block.HAS_ELAPSED | state_block.ELAPSED_SET | state_block.HAS_AT
+    counter = state_block.HAS_VALUE | state_block.HAS_ELAPSED | state_block.ELAPSED_SET
+    before = state([3, 2], [(timing, 40, 800, 5000), (counter, 7, 0, 0), (0, 0, 0, 0)])
+    later = state([3, 2], [(timing, 56, 816, 5000), (counter, 7, 0, 0), (0, 0, 0, 0)])
+    assert helpers.grown(before, later, 2, 3) == [(0, 16, 16)]
+    assert helpers.grown(before, before, 2, 3) == []
+    for changed in (state([3, 3], [(timing, 56, 816, 5000), (counter, 7, 0, 0), (0, 0, 0, 0)]),
+                    state([3, 2], [(timing | 32, 56, 816, 5000), (counter, 7, 0, 0),
+                                   (0, 0, 0, 0)]),
+                    state([3, 2], [(timing, 56, 816, 5016), (counter, 7, 0, 0), (0, 0, 0, 0)]),
+                    state([3, 2], [(timing, 40, 800, 5000), (counter, 8, 0, 0), (0, 0, 0, 0)]),
+                    state([3, 2], [(timing, 40, 800, 5000), (counter, 7, 0, 0), (0, 1, 0, 0)])):
+        assert helpers.grown(before, changed, 2, 3) is None
+    first, marks, dirty = 30, 60, 70
+    words = (ctypes.c_int32 * 80)()
+    helpers.move(words, [(0, 16, 16), (2, 0, 8)], 10, first, marks, dirty)
+    helpers.move(words, [(0, 16, 16)], 1, first, marks, dirty)
+    assert state_block._get64(words, first + state_block.ELAPSED) == 176
+    assert state_block._get64(words, first + state_block.AT) == 176
+    assert state_block._get64(words, first + 16 + state_block.AT) == 80
+    assert words[layout.DIRTY] == 2 and list(words[dirty:dirty + 2]) == [0, 2]
+    assert (words[marks], words[marks + 1], words[marks + 2]) == (1, 0, 1)

@@ -3,6 +3,9 @@ scans in the IDE leave, and everything a user sets or reads on a running PLC sti
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 import threading
 from collections.abc import Callable, Iterator
 
@@ -248,3 +251,32 @@ def test_fun_94_text_comes_back_and_the_ascii_files_follow_the_ide() -> None:
         assert run.ascii_terminal.text() == reference.ascii_terminal.text()
     finally:
         run.close()
+
+
+
+_PRIORITY = """
+import os
+from ladderworks.core.plc import scan_process
+before = (os.sched_getscheduler(0), os.getpriority(os.PRIO_PROCESS, 0))
+got = scan_process.raise_priority()
+during = (os.sched_getscheduler(0), os.getpriority(os.PRIO_PROCESS, 0))
+scan_process.normal_priority()
+after = (os.sched_getscheduler(0), os.getpriority(os.PRIO_PROCESS, 0))
+print(got == "normal", during == before, after == before)
+"""
+
+
+@pytest.mark.skipif(not hasattr(os, "sched_getscheduler"), reason="Linux's scheduler calls")
+@pytest.mark.parametrize("asked", ["", "normal"])
+def test_the_scan_process_priority_is_raised_while_it_scans_and_given_back(asked: str) -> None:
+    """`raise_priority` gets what the system grants (nothing when told "normal", or where
+    nothing is granted) and `normal_priority` gives it back; in a child process, so the
+    test's own priority is never touched."""
+    env = dict(os.environ, LADDERWORKS_SCAN_PRIORITY=asked)
+    done = subprocess.run([sys.executable, "-c", _PRIORITY], env=env, capture_output=True,
+                          text=True, check=True)
+    normal, unchanged, restored = done.stdout.split()
+    assert restored == "True"
+    assert unchanged == normal  # raised exactly when it says so
+    if asked == "normal":
+        assert normal == "True"

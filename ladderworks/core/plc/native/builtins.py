@@ -28,6 +28,7 @@ from ladderworks.core.plc.functions import (
 from ladderworks.core.plc.functions import arithmetic as _arithmetic
 from ladderworks.core.plc.native import layout
 from ladderworks.core.plc.native.ir_text import FunctionText
+from ladderworks.core.plc.native.layout import Layout
 
 _SIZES = memory_sizes()
 _I64 = (-(1 << 63), (1 << 63) - 1)
@@ -274,26 +275,26 @@ def _window(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str
 
 def _edge(rising: bool) -> Callable[..., str | None]:
     """DIFU/DIFD: the edge memory in a state word (bit 0 its value, bit 1 set once written:
-    a key of `ctx.edges`, bit 2 set while it is in the changed list), written back into
+    a key of `ctx.edges`; its mark word says it is in the changed list), written back into
     `ctx.edges` when read (scan.py)."""
 
-    def emit(f: FunctionText, word: int, number: int, dirty: int, inputs: list[str]) -> str:
+    def emit(f: FunctionText, word: int, number: int, places: Layout, inputs: list[str]) -> str:
         act = inputs[-1]
         ptr = f.word_ptr(word)
         old = f.value(f"load i32, ptr {ptr}")
         before = f.value(f"trunc i32 {f.value(f'and i32 {old}, 1')} to i8")
         wide = f.value(f"or i32 {f.value(f'zext i8 {act} to i32')}, 2")
-        differs = f.value(f"icmp ne i32 {wide}, {f.value(f'and i32 {old}, 3')}")
-        listed = f.value(f"icmp ne i32 {f.value(f'and i32 {old}, 4')}, 0")
-        first = f.value(f"and i1 {differs}, {f.value(f'xor i1 {listed}, true')}")
-        mark = f.value(f"or i32 {wide}, 4")
-        keep = f.value(f"or i1 {listed}, {first}")
-        f.add(f"store i32 {f.value(f'select i1 {keep}, i32 {mark}, i32 {wide}')}, ptr {ptr}")
+        differs = f.value(f"icmp ne i32 {wide}, {old}")
+        mark_ptr = f.word_ptr(places.marks - 1 - number)
+        marked = f.value(f"load i32, ptr {mark_ptr}")
+        first = f.value(f"and i1 {differs}, {f.value(f'icmp eq i32 {marked}, 0')}")
+        f.add(f"store i32 {wide}, ptr {ptr}")
+        step = f.value(f"zext i1 {first} to i32")
+        f.add(f"store i32 {f.value(f'or i32 {marked}, {step}')}, ptr {mark_ptr}")
         count_ptr = f.word_ptr(layout.DIRTY)
         count = f.value(f"load i32, ptr {count_ptr}")
-        entry = f.value(f"getelementptr i32, ptr {f.word_ptr(dirty)}, i32 {count}")
+        entry = f.value(f"getelementptr i32, ptr {f.word_ptr(places.dirty)}, i32 {count}")
         f.add(f"store i32 {-1 - number}, ptr {entry}")
-        step = f.value(f"zext i1 {first} to i32")
         f.add(f"store i32 {f.value(f'add i32 {count}, {step}')}, ptr {count_ptr}")
         if rising:
             return f.value(f"and i8 {act}, {f.value(f'xor i8 {before}, 1')}")
@@ -341,13 +342,13 @@ def edge_key(spec: InstructionSpec, impl: FunctionImpl | None,
 
 
 def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Sequence[object],
-         inputs: list[str], edge_words: dict[tuple[str, int], int], edge_base: int,
-         dirty: int) -> str | None:
+         inputs: list[str], edge_words: dict[tuple[str, int], int],
+         places: Layout) -> str | None:
     """Emit the op's code into `f`; its W1 (an i8 0/1 value), or None when not native."""
     key = edge_key(spec, impl, params)
     if key is not None:
         number = edge_words[key]
-        return EDGES[impl](f, edge_base + number, number, dirty, inputs)
+        return EDGES[impl](f, places.edge_base + number, number, places, inputs)
     emitter = EMITTERS.get(impl)
     if emitter is None:
         return None

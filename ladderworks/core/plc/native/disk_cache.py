@@ -17,7 +17,7 @@ from pathlib import Path
 
 from ladderworks.core.plc.native.generator import NativeProgram
 
-FORMAT = 1
+FORMAT = 2  # 2: the object code is several object files (jit.pack)
 ENV = "LADDERWORKS_NATIVE_CACHE"  # a directory, or "off"
 
 

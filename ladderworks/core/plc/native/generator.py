@@ -12,7 +12,7 @@ its Python implementation with the same call-site state.
 
 from __future__ import annotations
 
-from collections.abc import Collection
+from collections.abc import Callable, Collection, Generator, Iterator
 from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address
@@ -24,13 +24,12 @@ from ladderworks.core.plc.codegen_plan import chunk_plan as plan_chunks
 from ladderworks.core.plc.codegen_values import Range, count_in_innermost, counted
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import builtins, layout, state_block, stateful, units
-from ladderworks.core.plc.native.ir_text import PASS, FunctionText
+from ladderworks.core.plc.native.ir_text import PASS, FunctionText, module
 from ladderworks.core.plc.native.layout import Layout
 
 CHUNK_OPS = 48  # a network starts a new chunk function once the chunk has this many ops
 MAX_CHUNK_OPS = 2000  # a giant network is cut anywhere after this many
-SYSTEM_RELAY = 9091
-_LEVEL_BITS = {1: 4, 2: 8, 3: 16}
+PART_CHARS = 1_000_000  # a module of IR text this long is compiled while the next is made
 _FLOW_ACT = (Flow.JUMP, Flow.LABEL_JUMP, Flow.LABEL_JUMP_MAIN, Flow.CALL)
 
 
@@ -69,15 +68,20 @@ class _Generator:
         self.unit_numbers = {u.name: n for n, u in enumerate(self.unit_list)}
         commons = sum(1 for spec in self.specs if spec.flow is Flow.COMMON)
         self.edge_words: dict[tuple[str, int], int] = {}
+        candidates = 0
         for spec, op in zip(self.specs, ops, strict=True):
-            key = builtins.edge_key(spec, implementation_of(spec, registry), op.params)
+            if spec.kind is not Kind.FUNCTION:
+                continue
+            impl = implementation_of(spec, registry)
+            key = builtins.edge_key(spec, impl, op.params)
             if key is not None and key not in self.edge_words:
                 self.edge_words[key] = len(self.edge_words)
-        candidates = sum(1 for spec in self.specs if spec.kind is Kind.FUNCTION and stateful.kind(
-            spec, implementation_of(spec, registry)) is not None)
+            candidates += stateful.kind(spec, impl) is not None
         self.layout = Layout(len(self.unit_list), commons, len(self.edge_words), candidates)
         self.blocks: list[tuple[int, int]] = []  # (call site, first word) of each state block
-        self.out: list[str] = []
+        self.out: list[str] = []  # functions not yet in a module
+        self.done: list[str] = []  # the modules made
+        self.program: NativeProgram | None = None
         self.calls: list[int] = []
         self.callbacks: list[tuple[int, int]] = []
         self.common_count = 0
@@ -161,41 +165,32 @@ class _Generator:
 
     # -- the program -------------------------------------------------------------------------
 
-    def run(self) -> NativeProgram:
-        numbers = [self.unit(unit) for unit in self.unit_list]
-        f = FunctionText("scan")
-        f.add(f"store i32 0, ptr {f.word_ptr(layout.ABORT)}")
+    def parts(self) -> Iterator[str]:
+        """The IR as modules of whole functions, each yielded once it has PART_CHARS
+        characters (jit.py compiles one while the next is made); `program` after the last."""
+        numbers: list[int] = []
+        for unit in self.unit_list:
+            numbers.append((yield from self.unit(unit)))
         levels = self.structure.levels
+        entries = {level: numbers[self.unit_numbers[unit.name]] for level, unit in levels.items()}
         first = levels.get(1)
-        if self.monitored:
-            units.flow_reset(f, (first.start, first.end) if first else None, len(self.ops))
-        for level in sorted(levels):
-            after = ""
-            if level > 1:
-                _, after = f.branch("%full", "i32")
-            relay = f.byte_ptr(*_relay())
-            old = f.value(f"load i8, ptr {relay}")
-            new = f.value(f"and i8 {old}, 227")
-            new = f.value(f"or i8 {new}, {_LEVEL_BITS.get(level, 0)}")
-            f.add(f"store i8 {new}, ptr {relay}")
-            f.add(f"call void @U{numbers[self.unit_numbers[levels[level].name]]}({PASS})")
-            state = f.load_word(layout.ABORT)
-            _, cont = f.branch(state, "i32")
-            f.add(f"ret i32 {state}")
-            f.start(cont)
-            if after:
-                f.join(after)
-        relay = f.byte_ptr(*_relay())
-        old = f.value(f"load i8, ptr {relay}")
-        f.add(f"store i8 {f.value(f'and i8 {old}, 227')}, ptr {relay}")
-        text = f.finish([], "0", "i32 %full")
-        head = "declare void @llvm.memset.p0.i64(ptr, i8, i64, i1)\n"
-        body = "\n".join([head, *builtins.declarations(), *self.out, text])
+        self.out.append(units.scan_function(entries, (first.start, first.end) if first else None,
+                                            len(self.ops) if self.monitored else 0))
+        yield from self.flush(0)
         edges = sorted(self.edge_words, key=self.edge_words.__getitem__)
-        return NativeProgram(body, self.layout, self.calls, self.callbacks, edges,
-                             self.blocks, self.unit_list, self.labels)
+        self.program = NativeProgram("\n".join(self.done), self.layout, self.calls,
+                                     self.callbacks, edges, self.blocks, self.unit_list,
+                                     self.labels)
 
-    def unit(self, unit: Unit) -> int:
+    def flush(self, least: int = PART_CHARS) -> Iterator[str]:
+        """The functions made so far as a module, once they have `least` characters."""
+        if self.out and sum(map(len, self.out)) >= least:
+            text = module(self.out, builtins.declarations())
+            self.done.append(text)
+            self.out = []
+            yield text
+
+    def unit(self, unit: Unit) -> Generator[str, None, int]:
         number = self.unit_numbers[unit.name]
         self.unit_number = number
         self.jumps, self.commons, self.jump_ids = [], [], 0
@@ -218,6 +213,7 @@ class _Generator:
                 depth = self.depth if mid else 0
                 result = str(len(chunks) + 1) if labelled else "0"
                 chunks.append(self.end_chunk(mid, result))
+                yield from self.flush()
                 self.start_chunk(depth)
             if new_network and not at_label:
                 self.depth = 1
@@ -228,6 +224,7 @@ class _Generator:
         self.out.append(units.unit_function(
             number, unit, chunks, range(first_common, self.common_count), self.jump_ids > 0,
             labelled, self.layout, self.chunk_of_label))
+        yield from self.flush()
         return number
 
     # -- ops -------------------------------------------------------------------------------
@@ -345,18 +342,20 @@ class _Generator:
                 condition = f.value(f"xor i8 {condition}, 1")
             condition = f.value(f"and i8 {self.cm(self.commons[-1].ident)}, {condition}")
             inverted = False
-        test = f.truth(condition)
+        # branch-free (an i8 select is a branch in LLVM's fast code generator): the 0/1
+        # condition shifted to the bit, or-ed in (OUT: into the byte with the bit cleared)
+        if inverted:
+            condition = f.value(f"xor i8 {condition}, 1")
         ptr = f.byte_ptr(address.area, address.byte)
         old = f.value(f"load i8, ptr {ptr}")
-        mask = 1 << address.bit
-        on = f.value(f"or i8 {old}, {mask}")
-        cleared = f.value(f"and i8 {old}, {0xFF ^ mask}")
+        bit = f.value(f"shl i8 {condition}, {address.bit}") if address.bit else condition
         if kind is Write.RESET:
-            on = cleared
-        off_value = cleared if kind is Write.OUT else old
-        if inverted:
-            on, off_value = off_value, on
-        f.add(f"store i8 {f.value(f'select i1 {test}, i8 {on}, i8 {off_value}')}, ptr {ptr}")
+            new = f.value(f"and i8 {old}, {f.value(f'xor i8 {bit}, -1')}")
+        else:
+            if kind is Write.OUT:
+                old = f.value(f"and i8 {old}, {0xFF ^ (1 << address.bit)}")
+            new = f.value(f"or i8 {old}, {bit}")
+        f.add(f"store i8 {new}, ptr {ptr}")
         return self.count_coil()
 
     def function(self, index: int, op: Op, off: bool, labelled: bool) -> list[Range]:
@@ -449,14 +448,13 @@ class _Generator:
         if off:
             return "0"
         f = self.f
-        native = builtins.emit(f, spec, impl, op.params, inputs, self.edge_words,
-                               self.layout.edge_base, self.layout.dirty)
+        native = builtins.emit(f, spec, impl, op.params, inputs, self.edge_words, self.layout)
         if native is not None:
             return native
         if stateful.kind(spec, impl) is not None:
             base = self.layout.block_base + state_block.BLOCK * len(self.blocks)
             native = stateful.emit(f, spec, impl, op.params, inputs, base, len(self.blocks),
-                                   self.layout.dirty, self.dialect)
+                                   self.layout.dirty, self.layout.marks, self.dialect)
             if native is not None:
                 self.blocks.append((site, base))
                 return native
@@ -477,14 +475,15 @@ class _Generator:
         return f.value(f"trunc i32 {result} to i8")
 
 
-def _relay() -> tuple:
-    from ladderworks.core.address import Area
+def generate_parts(ops: tuple[Op, ...], registry: dict[str, FunctionImpl], *,
+                   disabled: Collection[int] = (), monitored: bool = False,
+                   dialect: str = "seed") -> tuple[Iterator[str], Callable[[], NativeProgram]]:
+    """The native scan's IR as modules made one by one, and what gives the program's facts
+    once the last is made."""
+    generator = _Generator(ops, registry, frozenset(disabled), monitored, dialect)
 
-    return Area.R, SYSTEM_RELAY
+    def program() -> NativeProgram:
+        assert generator.program is not None, "the parts were not all made"
+        return generator.program
 
-
-def generate_ir(ops: tuple[Op, ...], registry: dict[str, FunctionImpl], *,
-                disabled: Collection[int] = (), monitored: bool = False,
-                dialect: str = "seed") -> NativeProgram:
-    """The native scan's IR text for `ops` (the variant of `disabled` ops and monitoring)."""
-    return _Generator(ops, registry, frozenset(disabled), monitored, dialect).run()
+    return generator.parts(), program

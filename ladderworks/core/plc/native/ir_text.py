@@ -8,12 +8,28 @@ are SSA values tracked by the generator (i8 0/1); the dispatch loops keep two `a
 
 from __future__ import annotations
 
+import re
+
 from ladderworks.core.address import Area
 
 AREA_ORDER: tuple[Area, ...] = tuple(Area)
 AREA_INDEX: dict[Area, int] = {area: k for k, area in enumerate(AREA_ORDER)}
 ARGS = "ptr noalias %b, ptr noalias %st, ptr noalias %fl, ptr %cb"
 PASS = "ptr %b, ptr %st, ptr %fl, ptr %cb"
+_CALLED = re.compile(r"call (void|i32) @([Uc]\d+)\(")
+_DEFINED = re.compile(r"^define (?:void|i32) @(\w+)\(", re.M)
+
+
+def module(functions: list[str], declarations: list[str]) -> str:
+    """A module of `functions`, declaring the units and chunks they call that another module
+    defines (every function has external linkage: the modules' object code is linked in one
+    execution engine)."""
+    text = "\n".join(functions)
+    defined = set(_DEFINED.findall(text))
+    called = {name: kind for kind, name in _CALLED.findall(text) if name not in defined}
+    head = ["declare void @llvm.memset.p0.i64(ptr, i8, i64, i1)", *declarations]
+    head += [f"declare {kind} @{name}(ptr, ptr, ptr, ptr)" for name, kind in called.items()]
+    return "\n".join([*head, text])
 
 
 class FunctionText:
@@ -28,6 +44,7 @@ class FunctionText:
         self.count = 0
         self.bases: set[int] = set()
         self.entry: list[str] = []  # lines of the entry block after the slots
+        self.pointers: dict[tuple[int, int], str] = {}  # this block's memory byte pointers
 
     def tmp(self) -> str:
         self.count += 1
@@ -43,6 +60,7 @@ class FunctionText:
     def start(self, label: str) -> None:
         self.body.append(f"{label}:")
         self.block = label
+        self.pointers = {}
 
     def value(self, line: str) -> str:
         """A new temporary `= line`; its name (`tmp` written out: 200k calls for X22)."""
@@ -53,7 +71,11 @@ class FunctionText:
     # -- state words, slots and memory ---------------------------------------------------
 
     def word_ptr(self, word: int) -> str:
-        return self.value(f"getelementptr i32, ptr %st, i64 {word}")
+        found = self.pointers.get((-1, word))
+        if found is None:
+            found = self.pointers[-1, word] = self.value(
+                f"getelementptr i32, ptr %st, i64 {word}")
+        return found
 
     def load_word(self, word: int) -> str:
         return self.value(f"load i32, ptr {self.word_ptr(word)}")
@@ -68,9 +90,15 @@ class FunctionText:
         self.add(f"store i32 {value}, ptr %v{slot}")
 
     def byte_ptr(self, area: Area, byte: int) -> str:
+        """The address of a memory byte (one per byte and block: the loads and stores of a
+        block share it; LLVM folds it into their addressing)."""
         index = AREA_INDEX[area]
-        self.bases.add(index)
-        return self.value(f"getelementptr i8, ptr %a{index}, i64 {byte}")
+        found = self.pointers.get((index, byte))
+        if found is None:
+            self.bases.add(index)
+            found = self.pointers[index, byte] = self.value(
+                f"getelementptr i8, ptr %a{index}, i64 {byte}")
+        return found
 
     def bit(self, area: Area, byte: int, bit: int, inverted: bool) -> str:
         """0/1 (i8) of a memory bit, or of its inverse."""
@@ -101,10 +129,9 @@ class FunctionText:
 
     def finish(self, prelude: list[str], result: str, extra: str = "") -> str:
         """The whole function: slots, `prelude` (loads before the body), body, `ret result`;
-        with `extra` arguments it is the module's entry (external linkage)."""
-        linkage = "" if extra else "internal "
+        `extra` arguments after the four (the entry's)."""
         args = f"{ARGS}, {extra}" if extra else ARGS
-        head = [f"define {linkage}{self.returns} @{self.name}({args}) {{", "entry:"]
+        head = [f"define {self.returns} @{self.name}({args}) {{", "entry:"]
         head += [f"  %v{k} = alloca i32" for k in range(self.slots)]
         head += [f"  store i32 0, ptr %v{k}" for k in range(self.slots)]
         for index in sorted(self.bases):

@@ -5,28 +5,36 @@ a `-j` worker's next scenario, does not compile again)."""
 from __future__ import annotations
 
 import hashlib
+import queue
+import re
+import struct
 import threading
 import time
 from collections import OrderedDict
-from collections.abc import Collection
+from collections.abc import Collection, Iterable
 from dataclasses import dataclass
 from typing import Any
 
 from ladderworks.core.compiler.binary import Op
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import disk_cache
-from ladderworks.core.plc.native.generator import NativeProgram, generate_ir
+from ladderworks.core.plc.native.generator import NativeProgram, generate_parts
 
 # LLVM's code generator at level 0 (FastISel): for X22's 35k ops 1.5 s, against 12 s at level 1
 # and 20 s at level 2 (SelectionDAG on the shared 2-core machine); the IR gets only the cheap
 # passes (SROA for the dispatch loops' slots, CFG simplification): instcombine alone took 5 s.
 CODEGEN_LEVEL = 0
 PASSES = ("sroa", "simplify_cfg")
-# the passes run on the units' functions (U<n>: the dispatch loops' slots) only: on the chunk
+# the passes run on the functions with slots (a unit's dispatch loop) only: on the chunk
 # functions they took 0.1-0.3 s of X22's cold compile and left the scan as fast (23 against
 # 24 µs, one run); True runs them on every function (benchmarks/native_compile.py, "before")
 CHUNK_PASSES = False
+# LLVM's verifier on each module before code generation (0.05-0.08 s of X22's cold compile):
+# the tests turn it on (tests/core/plc/conftest.py); the generator's IR is the same for a user
+VERIFY = False
 CACHED = 8  # compiled variants kept in memory
+_SLOTTED = re.compile(r"^define \w+ @(\w+)\(.*\{\nentry:\n  %v0 = alloca", re.M)
+_FUNCTIONS = re.compile(r"^define \w+ @(\w+)\(", re.M)
 _lock = threading.Lock()
 _cache: OrderedDict[tuple[str, bool, frozenset[int]], Compiled] = OrderedDict()
 _ready: list[bool] = []
@@ -69,41 +77,106 @@ def program_hash(ops: tuple[Op, ...], dialect: str) -> str:
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
 
-def compile_ir(text: str, keep: list[bytes] | None = None) -> tuple[Any, int, float]:
-    """JIT-compile a module's IR; (engine, address of `scan`, seconds). `keep` gets the
-    object code (for the disk cache)."""
+def _object(machine: Any, text: str) -> bytes:
+    """One module's IR compiled to object code (the units' functions get the passes)."""
     import llvmlite.binding as llvm
 
-    started = time.perf_counter()
-    machine = _machine()
     module = llvm.parse_assembly(text)
-    module.verify()
+    if VERIFY:
+        module.verify()
     options = llvm.create_pipeline_tuning_options(speed_level=0)
     builder = llvm.create_pass_builder(machine, options)
     passes = llvm.create_new_function_pass_manager()
     for name in PASSES:
         getattr(passes, f"add_{name}_pass")()
-    for function in module.functions:
-        if not function.is_declaration and (CHUNK_PASSES or function.name.startswith("U")):
-            passes.run(function, builder)
-    engine = llvm.create_mcjit_compiler(module, machine)
+    # by name, found in the text: a walk over the module's functions would take Python's
+    # lock some 2,000 times from the thread making the IR (jit.compile_ir)
+    names = _FUNCTIONS.findall(text) if CHUNK_PASSES else _SLOTTED.findall(text)
+    for name in names:
+        passes.run(module.get_function(name), builder)
+    return bytes(machine.emit_object(module))
+
+
+def compile_ir(parts: Iterable[str], keep: list[bytes] | None = None, entry: str = "scan"
+               ) -> tuple[Any, int, float, float]:
+    """JIT-compile the modules `parts` makes: each is parsed and compiled to object code on a
+    worker thread while the next is made (llvmlite's calls release Python's lock, so LLVM
+    works while Python writes IR), then the objects are linked in one execution engine;
+    (engine, address of `scan`, seconds making the IR, seconds of LLVM's work). `keep` gets
+    the object code (for the disk cache)."""
+    machine = _machine()
+    work: queue.Queue[str | None] = queue.Queue()
+    objects: list[bytes] = []
+    failed: list[BaseException] = []
+    busy = [0.0]
+
+    def compile_parts() -> None:
+        while (text := work.get()) is not None:
+            started = time.perf_counter()
+            try:
+                if not failed:
+                    objects.append(_object(machine, text))
+            except Exception as error:  # raised below, in the caller's thread
+                failed.append(error)
+            busy[0] += time.perf_counter() - started
+
+    worker = threading.Thread(target=compile_parts, name="native-compile", daemon=True)
+    worker.start()
+    making = 0.0
+    try:
+        made = iter(parts)
+        while True:
+            started = time.perf_counter()
+            text = next(made, None)
+            making += time.perf_counter() - started
+            if text is None:
+                break
+            work.put(text)
+    finally:
+        work.put(None)
+        worker.join()
+    if failed:
+        raise failed[0]
+    code = pack(objects)
+    started = time.perf_counter()
+    engine, address = load_object(code, entry)
     if keep is not None:
-        engine.set_object_cache(lambda _module, code: keep.append(bytes(code)), lambda _: None)
-    engine.finalize_object()
-    address = engine.get_function_address("scan")
-    return engine, address, time.perf_counter() - started
+        keep.append(code)
+    return engine, address, making, busy[0] + time.perf_counter() - started
 
 
-def load_object(code: bytes) -> tuple[Any, int]:
-    """An execution engine running stored object code; (engine, address of `scan`)."""
+def pack(objects: list[bytes]) -> bytes:
+    """Object files as one stored blob: their count and sizes, then each."""
+    head = struct.pack(f"<4sI{len(objects)}Q", b"LWNO", len(objects), *map(len, objects))
+    return b"".join([head, *objects])
+
+
+def unpack(code: bytes) -> list[bytes]:
+    """The object files of a blob `pack` made."""
+    magic, count = struct.unpack_from("<4sI", code)
+    if magic != b"LWNO":
+        raise ValueError("not a native scan's object code")
+    sizes = struct.unpack_from(f"<{count}Q", code, 8)
+    at, objects = 8 + 8 * count, []
+    for size in sizes:
+        objects.append(code[at:at + size])
+        at += size
+    if at != len(code):
+        raise ValueError("the object code is cut short")
+    return objects
+
+
+def load_object(code: bytes, entry: str = "scan") -> tuple[Any, int]:
+    """An execution engine running stored object code; (engine, address of `entry`)."""
     import llvmlite.binding as llvm
 
     engine = llvm.create_mcjit_compiler(llvm.parse_assembly(""), _machine())
-    engine.add_object_file(llvm.ObjectFileRef.from_data(code))
+    for part in unpack(code):
+        engine.add_object_file(llvm.ObjectFileRef.from_data(part))
     engine.finalize_object()
-    address = engine.get_function_address("scan")
+    address = engine.get_function_address(entry)
     if not address:
-        raise RuntimeError("the stored object has no scan function")
+        raise RuntimeError(f"the stored object has no {entry} function")
     return engine, address
 
 
@@ -136,12 +209,11 @@ def compiled_scan(ops: tuple[Op, ...], dialect: str, registry: dict[str, Functio
         except Exception:  # a damaged file: compile
             result = None
     if result is None:
-        started = time.perf_counter()
-        program = generate_ir(ops, registry, disabled=disabled, monitored=monitored,
-                              dialect=dialect)
-        ir_seconds = time.perf_counter() - started
+        parts, made = generate_parts(ops, registry, disabled=disabled, monitored=monitored,
+                                     dialect=dialect)
         code: list[bytes] = []
-        engine, address, llvm_seconds = compile_ir(program.text, code)
+        engine, address, ir_seconds, llvm_seconds = compile_ir(parts, code)
+        program = made()
         result = Compiled(engine, address, program, ir_seconds, llvm_seconds)
         if code:
             disk_cache.store(name, code[0], program)

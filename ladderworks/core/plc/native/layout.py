@@ -46,10 +46,17 @@ class Layout:
         return self.edge_base + self.edges
 
     @property
+    def marks(self) -> int:
+        """The changed marks (1 while in the changed list): block k's at `marks + k`, edge
+        memory n's at `marks - 1 - n` (the list's entry added to it). Outside the state
+        words, so that the words before them are the program's state alone."""
+        return self.block_base + 8 * self.stateful + self.edges
+
+    @property
     def dirty(self) -> int:
         """The list of changed blocks and edge memories (one spare: the list is written one
         past its end)."""
-        return self.block_base + 8 * self.stateful
+        return self.marks + self.stateful
 
     @property
     def words(self) -> int:

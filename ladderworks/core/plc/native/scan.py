@@ -13,6 +13,7 @@ from ladderworks.core.compiler.checks import implementation_of
 from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import layout, state_block
+from ladderworks.core.plc.native.helpers import grown, move
 from ladderworks.core.plc.native.ir_text import AREA_ORDER
 from ladderworks.core.plc.native.jit import Compiled, compiled_scan
 
@@ -64,6 +65,12 @@ class NativeScan:
         self._blocks = [(self.states[site], base) for site, base in program.blocks]
         self._block_of: dict[int, int] | None = None  # a block's base by id() of its dict
         self._dirty = program.layout.dirty
+        self._marks = program.layout.marks
+        places = program.layout
+        self._first_block = places.block_base
+        # the edge memories and state blocks: the state the skipper compares (skip_state)
+        self._state_at = 4 * places.edge_base
+        self._state_end = 4 * (places.block_base + state_block.BLOCK * places.stateful)
         words = self._words
         self._now, self._scan_ms, self._wake = (ctypes.c_int64.from_buffer(words, 4 * word)
                                                 for word in (layout.NOW, layout.SCAN_MS,
@@ -106,6 +113,9 @@ class NativeScan:
                 words[word] = (2 | bool(edges[key])) if key in edges else 0
             for state, base in self._blocks:
                 state_block.push(words, base, state)
+            marks = self._marks
+            for k in range(marks - len(self._edge_keys), marks + len(self._blocks)):
+                words[k] = 0
             words[layout.DIRTY] = 0
         blocks = self._blocks
         if blocks:
@@ -183,6 +193,37 @@ class NativeScan:
             if base is not None:  # else a call-back's state: read from its dict
                 state_block.push(words, base, state)
 
+    # -- the skipper's view (core/plc/skipping.py): the state words rather than the dicts ---
+
+    def callback_states(self) -> tuple[dict[str, Any], ...]:
+        """The states that live in their dicts while scans run (the call-backs' sites)."""
+        return tuple(site[1] for site in self._sites)
+
+    def skip_state(self) -> bytes:
+        """The edge memories and state blocks as they stand: with memory and the call-backs'
+        dicts, everything the next scan depends on."""
+        return bytes(memoryview(self._words).cast("B")[self._state_at:self._state_end])
+
+    def skip_growth(self, before: bytes, after: bytes) -> list[tuple[int, int, int]] | None:
+        """What the time values (a timer's elapsed time, the scan a site last ran at) grew by
+        from `before` to `after` (two `skip_state()`s), as (block, elapsed's growth, at's
+        growth); None when anything else differs (compared in native code)."""
+        if before == after:
+            return []
+        return grown(before, after, len(self._edge_keys), len(self._blocks))
+
+    def skip_wake(self, block: int) -> int | None:
+        """The wake time a block's state says, or None."""
+        words, base = self._words, self._first_block + state_block.BLOCK * block
+        return state_block._get64(words, base + state_block.WAKE) \
+            if words[base] & state_block.HAS_WAKE else None
+
+    def skip_move(self, growth: list[tuple[int, int, int]], times: int) -> None:
+        """Move the time values on by `times` times their growth (the skipped scans'), the
+        blocks then in the changed list (the dicts get them at the next `sync`)."""
+        move(self._words, growth, times, self._first_block, self._marks, self._dirty)
+        self._unsynced = True
+
     def sync(self) -> None:
         """Write the call sites' states and the edge memories the scans changed since the last
         sync into their dicts (`ctx.edges`): the dicts are then the Python scan's."""
@@ -192,17 +233,16 @@ class NativeScan:
         words = self._words
         edges = self._ctx.edges
         changed = words[layout.DIRTY]
-        blocks, dirty, edge_keys = self._blocks, self._dirty, self._edge_keys
+        blocks, dirty, edge_keys, marks = self._blocks, self._dirty, self._edge_keys, self._marks
         for k in range(changed):
             entry = words[dirty + k]
+            words[marks + entry] = 0
             if entry >= 0:
                 state, base = blocks[entry]
                 state_block.pull(words, base, state)
             else:
                 word, key = edge_keys[-1 - entry]
-                value = words[word]
-                words[word] = value & 3
-                edges[key] = bool(value & 1)
+                edges[key] = bool(words[word] & 1)
         words[layout.DIRTY] = 0
 
 

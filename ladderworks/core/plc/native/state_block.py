@@ -30,8 +30,10 @@ _I32 = (-(1 << 31), (1 << 31) - 1)
 class Block:
     """The IR of one site's state block (`base`: its first word)."""
 
-    def __init__(self, f: FunctionText, base: int, number: int, dirty_list: int) -> None:
+    def __init__(self, f: FunctionText, base: int, number: int, dirty_list: int,
+                 marks: int) -> None:
         self.f, self.base, self.number, self.dirty_list = f, base, number, dirty_list
+        self.mark = marks + number
 
     def ptr(self, offset: int) -> str:
         return self.f.word_ptr(self.base + offset)
@@ -47,20 +49,23 @@ class Block:
 
     def set_flags(self, old: str, new: str) -> None:
         """Store the flags; a block whose flags or values changed (`new` has CHANGED set by
-        the caller when values changed) joins the changed list once."""
+        the caller when values changed; the stored flags never have it) joins the changed
+        list once (its mark word says it is in it)."""
         f = self.f
         differs = f.value(f"icmp ne i32 {old}, {new}")
-        marked = f.value(f"and i32 {old}, {CHANGED}")
+        mark_ptr = f.word_ptr(self.mark)
+        marked = f.value(f"load i32, ptr {mark_ptr}")
         first = f.value(f"and i1 {differs}, {f.value(f'icmp eq i32 {marked}, 0')}")
-        marked_new = f.value(f"or i32 {new}, {CHANGED}")
-        f.add(f"store i32 {f.value(f'select i1 {differs}, i32 {marked_new}, i32 {old}')}, "
+        stored = f.value(f"and i32 {new}, {~CHANGED}")
+        f.add(f"store i32 {f.value(f'select i1 {differs}, i32 {stored}, i32 {old}')}, "
               f"ptr {self.ptr(0)}")
+        step = f.value(f"zext i1 {first} to i32")
+        f.add(f"store i32 {f.value(f'or i32 {marked}, {step}')}, ptr {mark_ptr}")
         count_ptr = f.word_ptr(layout.DIRTY)
         count = f.value(f"load i32, ptr {count_ptr}")
         slot = f.value(f"getelementptr i32, ptr %st, i64 {self.dirty_list}")
         entry = f.value(f"getelementptr i32, ptr {slot}, i32 {count}")
         f.add(f"store i32 {self.number}, ptr {entry}")
-        step = f.value(f"zext i1 {first} to i32")
         f.add(f"store i32 {f.value(f'add i32 {count}, {step}')}, ptr {count_ptr}")
 
 
@@ -96,9 +101,8 @@ _VALUES = (("elapsed", HAS_ELAPSED, ELAPSED), ("at", HAS_AT, AT), ("wake", HAS_W
 
 
 def pull(words: Any, base: int, state: dict[str, Any]) -> None:
-    """Write a site's dict from its block (and clear its changed bit)."""
+    """Write a site's dict from its block."""
     flags = words[base]
-    words[base] = flags & ~CHANGED
     if flags & HAS_ELAPSED:
         state["elapsed"] = _get64(words, base + ELAPSED) if flags & ELAPSED_SET else None
     if flags & HAS_AT:

@@ -45,7 +45,7 @@ from ladderworks.core.plc.native.state_block import (
     _load,
     _store,
 )
-from ladderworks.core.plc.native.tables import _codb, _counter, _xmovb
+from ladderworks.core.plc.native.tables import _codb, _counter, _dcnvb, _xmovb
 
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
@@ -66,12 +66,16 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "tmr"
     if impl is convert.codb:
         return "codb"
+    if impl is convert.dcnvb:
+        return "dcnvb"
     if impl in (counters.ctr, counters.ctrc, counters.ctrb):
         return "counter"
     if impl is transfer.xmovb:
         return "xmovb"
     if impl is timers.tmrb:
         return "tmrb"
+    if impl is timers.tmrc:
+        return "tmrc"
     if impl is timers.tmrbf:
         return "tmrbf"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
@@ -180,6 +184,50 @@ def _timer(b: Block, inputs: list[str], preset_of: Callable[[], str]) -> str:
     return f.value(f"zext i1 {w1} to i8")
 
 
+def _tmrc(b: Block, params: Sequence[object], inputs: list[str], dialect: str) -> str | None:
+    """TMRC: the preset (2 bytes, in units of its accuracy) read from memory, the elapsed
+    units written to its 4-byte register; a wake at the next unit (timers.tmrc)."""
+    accuracy, preset_at, register = params
+    if not isinstance(accuracy, int) or not _fits(preset_at, 2) or not _fits(register, 4) \
+            or dialect == "s7":  # the native loads are little-endian, as the PMC's memory
+        return None
+    assert isinstance(preset_at, Address) and isinstance(register, Address)
+    units_ms = timers.FANUC_TMRC_UNIT_MS if dialect == "fanuc" else timers.TMRC_UNIT_MS
+    unit = units_ms.get(accuracy, units_ms[0])
+    f = b.f
+    flags = b.flags()
+    on, off, joined = f.label(), f.label(), f.label()
+    f.add(f"br i1 {f.truth(inputs[-1])}, label %{on}, label %{off}")
+    f.start(off)  # elapsed = None, the register 0
+    b.set_flags(flags, f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_ELAPSED}')}, "
+                               f"{~ELAPSED_SET}"))
+    _store(f, register, 4, "0")
+    off_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(on)
+    elapsed, new = _elapsed(b, flags)
+    preset = f.value(f"zext i16 {_load(f, preset_at, 2)} to i64")
+    counted = f.value(f"udiv i64 {elapsed}, {unit}")
+    below = f.value(f"icmp slt i64 {counted}, {preset}")
+    units = f.value(f"select i1 {below}, i64 {counted}, i64 {preset}")
+    next_unit = f.value(f"sub i64 {f.value(f'add i64 {_time(f, layout.NOW)}, {unit}')}, "
+                        f"{f.value(f'urem i64 {elapsed}, {unit}')}")
+    wake = f.value(f"select i1 {below}, i64 {next_unit}, i64 {NEVER}")
+    b.store64(WAKE, wake)
+    scan_wake = _time(f, layout.WAKE)
+    earlier = f.value(f"icmp slt i64 {wake}, {scan_wake}")
+    f.add(f"store i64 {f.value(f'select i1 {earlier}, i64 {wake}, i64 {scan_wake}')}, "
+          f"ptr {f.word_ptr(layout.WAKE)}, align 4")
+    _store(f, register, 4, f.value(f"trunc i64 {units} to i32"))
+    b.set_flags(flags, f.value(f"or i32 {f.value(f'or i32 {new}, {HAS_WAKE}')}, {CHANGED}"))
+    done = f.value(f"xor i1 {below}, true")  # the preset reached
+    on_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(joined)
+    w1 = f.value(f"phi i1 [false, %{off_end}], [{done}, %{on_end}]")
+    return f.value(f"zext i1 {w1} to i8")
+
+
 def _tmrbf(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
     _number, preset = params
     if not isinstance(preset, int):
@@ -280,23 +328,27 @@ _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mu
 
 
 def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Sequence[object],
-         inputs: list[str], base: int, number: int, dirty_list: int,
+         inputs: list[str], base: int, number: int, dirty_list: int, marks: int,
          dialect: str) -> str | None:
     """The op's native code with its state in block `number` (at word `base`); None: not
     native (nothing emitted)."""
     found = kind(spec, impl)
-    block = Block(f, base, number, dirty_list)
+    block = Block(f, base, number, dirty_list, marks)
     try:
         if found == "tmr":
             return _tmr(block, params, inputs, dialect)
         if found == "tmrb":
             return _tmrb(block, params, inputs)
+        if found == "tmrc":
+            return _tmrc(block, params, inputs, dialect)
         if found == "tmrbf":
             return _tmrbf(block, params, inputs)
         if found == "xmovb":
             return _xmovb(block, params, inputs)
         if found == "counter":
             return _counter(block, impl, params, inputs)
+        if found == "dcnvb":
+            return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
         if found == "arithmetic":

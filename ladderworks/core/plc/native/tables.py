@@ -1,12 +1,19 @@
-"""CODB, XMOVB and the counters (CTR, CTRC, CTRB) as native code, their call-site states in
-blocks of state words (state_block.py): exactly what core/plc/functions/ does."""
+"""CODB, XMOVB, DCNVB and the counters (CTR, CTRC, CTRB) as native code, their call-site states
+in blocks of state words (state_block.py): exactly what core/plc/functions/ does."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
 from ladderworks.core.address import AREA_SIZES, Address
-from ladderworks.core.plc.functions import FunctionImpl, counters
+from ladderworks.core.plc.functions import (
+    FLAG_NEGATIVE,
+    FLAG_OVERFLOW,
+    FLAG_ZERO,
+    RESULT_REGISTER,
+    FunctionImpl,
+    counters,
+)
 from ladderworks.core.plc.native.state_block import (
     ACT,
     CHANGED,
@@ -181,3 +188,79 @@ def _signed8(value: int) -> int:
     return value - 256 if value >= 128 else value
 
 
+
+
+def _dcnvb(b: Block, params: Sequence[object], inputs: list[str], dialect: str) -> str | None:
+    """DCNVB: signed binary <-> BCD of 1/2/4 bytes (CNV = 1: BCD with SIN's sign to binary),
+    R9000 the flags, W1 = 1 when it cannot (convert.dcnvb)."""
+    width, source, target = params
+    if len(inputs) != 4 or width not in (1, 2, 4) or dialect == "s7" or \
+            not (_fits(source, width) and _fits(target, width) and _fits(RESULT_REGISTER, 1)):
+        return None
+    assert isinstance(width, int) and isinstance(source, Address) and \
+        isinstance(target, Address)
+    f = b.f
+    sin, cnv, rst, act = inputs
+    bits, digits = 8 * width, 2 * width
+
+    def flags(value: str) -> str:
+        zero = f.value(f"zext i1 {f.value(f'icmp eq i64 {value}, 0')} to i8")
+        negative = f.value(f"zext i1 {f.value(f'icmp slt i64 {value}, 0')} to i8")
+        return f.value(f"or i8 {f.value(f'mul i8 {zero}, {FLAG_ZERO}')}, "
+                       f"{f.value(f'mul i8 {negative}, {FLAG_NEGATIVE}')}")
+
+    def stored(ok: str, value: str, raw: str, overflow: str) -> str:
+        """On `ok` the target gets `raw` and R9000 the flags of `value`, else R9000 gets
+        `overflow`; the i1 error."""
+        bad, good, done = f.label(), f.label(), f.label()
+        f.add(f"br i1 {ok}, label %{good}, label %{bad}")
+        f.start(bad)
+        _store(f, RESULT_REGISTER, 1, overflow)
+        f.add(f"br label %{done}")
+        f.start(good)
+        _store(f, target, width, f.value(f"trunc i64 {raw} to i{bits}"))
+        _store(f, RESULT_REGISTER, 1, flags(value))
+        f.add(f"br label %{done}")
+        f.start(done)
+        return f.value(f"xor i1 {ok}, true")
+
+    def from_bcd() -> str:
+        raw = f.value(f"zext i{bits} {_load(f, source, width)} to i64")
+        ok, magnitude = "true", "0"
+        for k in range(digits):
+            digit = f.value(f"and i64 {f.value(f'lshr i64 {raw}, {4 * k}')}, 15")
+            ok = f.value(f"and i1 {ok}, {f.value(f'icmp ule i64 {digit}, 9')}")
+            magnitude = f.value(f"add i64 {magnitude}, {f.value(f'mul i64 {digit}, {10 ** k}')}")
+        negated = f.value(f"sub i64 0, {magnitude}")
+        value = f.value(f"select i1 {f.truth(sin)}, i64 {negated}, i64 {magnitude}")
+        return stored(ok, value, value, str(FLAG_OVERFLOW))
+
+    def to_bcd() -> str:
+        value = f.value(f"sext i{bits} {_load(f, source, width)} to i64")
+        negative = f.value(f"icmp slt i64 {value}, 0")
+        size = f.value(f"select i1 {negative}, i64 {f.value(f'sub i64 0, {value}')}, "
+                       f"i64 {value}")
+        ok = f.value(f"icmp slt i64 {size}, {10 ** digits}")
+        raw = "0"
+        for k in range(digits):
+            digit = f.value(f"urem i64 {f.value(f'udiv i64 {size}, {10 ** k}')}, 10")
+            raw = f.value(f"or i64 {raw}, {f.value(f'shl i64 {digit}, {4 * k}')}")
+        sign = f.value(f"select i1 {negative}, i8 {FLAG_OVERFLOW | FLAG_NEGATIVE}, "
+                       f"i8 {FLAG_OVERFLOW}")
+        return stored(ok, value, raw, sign)
+
+    def compute() -> str:
+        binary, bcd, joined = f.label(), f.label(), f.label()
+        f.add(f"br i1 {f.truth(cnv)}, label %{binary}, label %{bcd}")
+        f.start(binary)
+        first = from_bcd()
+        first_end = f.block
+        f.add(f"br label %{joined}")
+        f.start(bcd)
+        second = to_bcd()
+        second_end = f.block
+        f.add(f"br label %{joined}")
+        f.start(joined)
+        return f.value(f"phi i1 [{first}, %{first_end}], [{second}, %{second_end}]")
+
+    return _held(b, rst, act, compute)

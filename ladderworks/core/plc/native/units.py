@@ -3,6 +3,7 @@ dispatch loop over them when it has labels) and the monitored scan's power-flow 
 
 from __future__ import annotations
 
+from ladderworks.core.address import Area
 from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit
 from ladderworks.core.plc.native import layout
 from ladderworks.core.plc.native.ir_text import PASS, FunctionText
@@ -14,7 +15,7 @@ def unit_function(number: int, unit: Unit, chunks: list[str], commons: range, ju
     """The function `U<n>` of a unit: its JMP id and COM gates reset, then its chunks in
     order, or (with labels) a dispatch loop over them that counts backward jumps and catches
     a JMPC of its level."""
-    f = FunctionText(f"U{number}", "void", slots=2)
+    f = FunctionText(f"U{number}", "void", slots=2 if labelled else 0)
     if jumps:
         f.store_word(places.jump_base + number, "0")
     for ident in commons:
@@ -106,3 +107,38 @@ def flow_reset(f: FunctionText, level1: tuple[int, int] | None, count: int) -> N
     ptr = f.value(f"getelementptr i8, ptr %fl, i64 {start}")
     f.add(f"call void @llvm.memset.p0.i64(ptr {ptr}, i8 0, i64 {end - start}, i1 false)")
     f.join(done)
+
+
+SYSTEM_RELAY = 9091  # R9091: bits 2-4 say which level runs
+_LEVEL_BITS = {1: 4, 2: 8, 3: 16}
+
+
+def scan_function(entries: dict[int, int], level1: tuple[int, int] | None,
+                  monitored_ops: int) -> str:
+    """The module's entry `scan(..., i32 %full)`: each level's unit (`entries`: level ->
+    unit number) with R9091's level bits set, levels 2 and 3 only when `%full`; in the
+    monitored scan (`monitored_ops` > 0) the power flow reset first."""
+    f = FunctionText("scan")
+    f.add(f"store i32 0, ptr {f.word_ptr(layout.ABORT)}")
+    if monitored_ops:
+        flow_reset(f, level1, monitored_ops)
+    for level in sorted(entries):
+        after = ""
+        if level > 1:
+            _, after = f.branch("%full", "i32")
+        relay = f.byte_ptr(Area.R, SYSTEM_RELAY)
+        old = f.value(f"load i8, ptr {relay}")
+        new = f.value(f"and i8 {old}, 227")
+        new = f.value(f"or i8 {new}, {_LEVEL_BITS.get(level, 0)}")
+        f.add(f"store i8 {new}, ptr {relay}")
+        f.add(f"call void @U{entries[level]}({PASS})")
+        state = f.load_word(layout.ABORT)
+        _, cont = f.branch(state, "i32")
+        f.add(f"ret i32 {state}")
+        f.start(cont)
+        if after:
+            f.join(after)
+    relay = f.byte_ptr(Area.R, SYSTEM_RELAY)
+    old = f.value(f"load i8, ptr {relay}")
+    f.add(f"store i8 {f.value(f'and i8 {old}, 227')}, ptr {relay}")
+    return f.finish([], "0", "i32 %full")
