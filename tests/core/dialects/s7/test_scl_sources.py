@@ -11,9 +11,9 @@ import pytest
 
 from ladderworks.core.diagnostics import Severity
 from ladderworks.core.dialects.s7.saving import save_block
-from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.dialects.s7.scl_source import parse_scl, split
 from ladderworks.core.dialects.s7.sd_save import SaveRefused
+from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.il.reading import parse_file
 
 SCL = Path(__file__).parent / "data" / "scl"
