@@ -5307,13 +5307,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/watch_table.py" line="415"/>
-        <source>{0} values written, {1} refused</source>
-        <translation>{0} değer yazıldı, {1} değer reddedildi</translation>
+        <source>Values written: {0}, refused: {1}</source>
+        <translation>Yazılan değer: {0}, reddedilen: {1}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/watch_table.py" line="418"/>
-        <source>{0} values written</source>
-        <translation>{0} değer yazıldı</translation>
+        <source>Values written: {0}</source>
+        <translation>Yazılan değer: {0}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/watch_texts.py" line="11"/>

@@ -188,7 +188,7 @@ def test_live_values_while_the_plc_scans_in_real_time_and_turkish_texts(
             "Ad", "Adres", "Görüntüleme biçimi", "İzleme değeri", "Değiştirme değeri"]
         assert watch.windowTitle() == "İzleme tablosu"
         assert watch.modify_button.text() == "Şimdi değiştir"
-        assert watch.message.text() == "1 değer yazıldı"  # said again in Turkish
+        assert watch.message.text() == "Yazılan değer: 1"  # said again in Turkish
         box = watch.table.cellWidget(elapsed, FORMAT)
         assert isinstance(box, QComboBox) and box.currentText() == "Zaman"
         for column in range(5):  # no cut title

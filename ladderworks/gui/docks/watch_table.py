@@ -413,10 +413,10 @@ class WatchTableDock(Retranslating, QDockWidget):
         if self.modify_errors:
             QTimer.singleShot(0, self._show_first_error)  # once the columns are laid out
             set_live_text(self.message, lambda: translate(
-                "WatchTable", "{0} values written, {1} refused").format(written, refused))
+                "WatchTable", "Values written: {0}, refused: {1}").format(written, refused))
         else:
             set_live_text(self.message, lambda: translate(
-                "WatchTable", "{0} values written").format(written))
+                "WatchTable", "Values written: {0}").format(written))
         return written
 
     def _show_first_error(self) -> None:
