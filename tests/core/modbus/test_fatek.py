@@ -15,7 +15,7 @@ from ladderworks.core.modbus.maps import FATEK_MAP, Table
 from ladderworks.core.modbus.server import ModbusServer
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.paths import EXAMPLES
-from tests.core.modbus.conftest import client_of, dialect_plc
+from tests.core.modbus.conftest import STOP, client_of, dialect_plc
 from tests.core.modbus.test_cli_serve import served
 from tests.core.modbus.test_server import wait_for
 
@@ -120,6 +120,6 @@ def test_serve_a_fatek_program_until_sigterm() -> None:
         assert client.read_holding_registers(R0 + 2, count=1).registers == [100]
         client.close()
         process.send_signal(signal.SIGTERM)
-        assert process.wait(timeout=2) == 0
+        assert process.wait(timeout=STOP) == 0
         out, err = process.communicate()
     assert "stopped" in out and err == ""

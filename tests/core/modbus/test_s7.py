@@ -26,7 +26,7 @@ from ladderworks.core.modbus.server import ModbusServer
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.core.plc.typed import real_bits
 from ladderworks.paths import EXAMPLES
-from tests.core.modbus.conftest import client_of
+from tests.core.modbus.conftest import STOP, client_of
 from tests.core.modbus.test_cli_serve import served
 from tests.core.modbus.test_server import wait_for
 
@@ -164,7 +164,7 @@ def test_serve_an_s7_folder_with_a_db_map_until_sigterm(
         assert not client.write_coil(I_COILS, True).isError()
         assert wait_for(lambda: client.read_coils(0, count=1).bits[0])
         process.send_signal(signal.SIGTERM)
-        assert process.wait(timeout=3) == 0
+        assert process.wait(timeout=STOP) == 0
         client.close()
     assert main(["serve", str(EXAMPLE), "--map", "DB_Yok", "--modbus", "127.0.0.1:0"]) == 2
     assert "'DB_Yok' is neither a map file nor a global DB" in capsys.readouterr().err
