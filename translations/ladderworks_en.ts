@@ -304,6 +304,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="180"/>
         <source>Network</source>
         <translation>Network</translation>
     </message>
@@ -333,42 +334,42 @@
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
         <source>All addresses — uses: {0}</source>
         <translation>All addresses — uses: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="300"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="316"/>
         <source>{0} is not used in the program</source>
         <translation>{0} is not used in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="324"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="319"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="339"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="350"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="345"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Address or symbol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="347"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="342"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Cross &amp;reference of this address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="348"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="343"/>
         <source>List every place the program reads and writes the address</source>
         <translation>List every place the program reads and writes the address</translation>
     </message>
@@ -1462,241 +1463,251 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="469"/>
-        <source>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</source>
-        <translation>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</translation>
+        <source>&apos;{text}&apos; is a {type}: the watch table has no format for it</source>
+        <translation>&apos;{text}&apos; is a {type}: the watch table has no format for it</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <source>&apos;{text}&apos; is not a date from D#1990-01-01 to D#2169-06-06 (e.g. D#2024-01-31)</source>
+        <translation>&apos;{text}&apos; is not a date from D#1990-01-01 to D#2169-06-06 (e.g. D#2024-01-31)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <source>&apos;{text}&apos; is not a time of day (e.g. TOD#12:30:00.000)</source>
+        <translation>&apos;{text}&apos; is not a time of day (e.g. TOD#12:30:00.000)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
         <source>the value has {length} characters: at most {limit} are read</source>
         <translation>the value has {length} characters: at most {limit} are read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
         <source>no modify value to write</source>
         <translation>no modify value to write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
         <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
         <translation>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="475"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
         <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
         <translation>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="477"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
         <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
         <translation>&apos;{text}&apos; is out of range: {low} to {high}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
         <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
         <translation>&apos;{text}&apos; is not a real number (e.g. 1.5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="485"/>
         <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
         <translation>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
         <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
         <translation>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
         <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
         <translation>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="486"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
         <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
         <translation>&apos;{text}&apos; is longer than the string&apos;s {length} characters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="488"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
         <source>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</source>
         <translation>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="497"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="501"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: the text ends inside {what} (cut off?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} needs its pin {pin}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: the wiring of {part} cannot be followed ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="512"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: there is no label &apos;{label}&apos; in this block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="509"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: a {language} network is shown, not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: the block &apos;{block}&apos; it calls is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
         <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
         <translation>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="526"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
         <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
         <translation>network {network}, row {row}, column {column}: the contact or coil has no operand</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="533"/>
         <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
         <translation>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
         <source>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</source>
         <translation>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
         <source>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</source>
         <translation>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="556"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="559"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="567"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="570"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="573"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="578"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="576"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="581"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="579"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="584"/>
         <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
         <translation>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="582"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="587"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
@@ -5352,11 +5363,21 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/watch_texts.py" line="18"/>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="19"/>
+        <source>Time of day</source>
+        <translation>Time of day</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="20"/>
         <source>Character</source>
         <translation>Character</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_texts.py" line="19"/>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="21"/>
         <source>String</source>
         <translation>String</translation>
     </message>
