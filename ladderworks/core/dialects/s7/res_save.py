@@ -16,6 +16,7 @@ from pathlib import Path
 from ladderworks.core.dialects.s7.sd_parser import ParseError, parse_sd
 from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.dialects.s7.texts import ENTRY_RE, ITEM_RE, PREFERRED, read_texts, scalar
+from ladderworks.core.il.program import Program
 from ladderworks.core.il.textform import decode_lines, decode_text, encode_text
 
 _PLAIN_RE = re.compile(r"^[^\s'\"&*!|>%@`#{}\[\],:?-][^:#]*$")
@@ -135,4 +136,18 @@ def res_files(model: S7Model) -> dict[Path, bytes]:
     return written
 
 
-__all__ = ["res_files", "update_res"]
+def companions(program: Program, path: Path) -> dict[Path, bytes]:
+    """The `.s7res` files Save writes with the S7 program's entry block saved as `path` (its
+    own file only: a Save As elsewhere writes no texts) — `res_files` of its model."""
+    model = program.model
+    if not isinstance(model, S7Model) or model.read is None or model.read.path is None:
+        return {}
+    try:
+        if path.resolve() != model.read.path.resolve():
+            return {}
+    except OSError:
+        return {}
+    return res_files(model)
+
+
+__all__ = ["companions", "res_files", "update_res"]

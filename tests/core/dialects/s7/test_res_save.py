@@ -55,7 +55,7 @@ def test_a_comment_without_an_id_place_and_a_new_id(tmp_path: Path) -> None:
     end and writes a text of several lines as a block."""
     _folder, model = _opened(tmp_path)
     assert res_files(_retitled(model, 0, ["The motor held by the FC", "a comment"])) == {}
-    data = "MultiLingualTexts:\r\n  - id: A\r\n    de-DE: x\r\n".encode()
+    data = b"MultiLingualTexts:\r\n  - id: A\r\n    de-DE: x\r\n"
     out = update_res(data, {"A": "neu", "B": "two\nlines"})
     assert out.decode().split("\r\n") == [
         "MultiLingualTexts:", "  - id: A", "    de-DE: neu", "  - id: B",
