@@ -277,13 +277,17 @@ def test_a_box_operand_changed_in_the_operand_dialog_is_saved(
     assert set(_changed_lines(before, after)) <= set(_network_lines(before, form))
 
 
+@pytest.mark.parametrize("folder", [False, True], ids=["file", "folder"])
 def test_a_changed_title_is_saved_into_the_s7res_beside(qtbot: QtBot, window: MainWindow,
-                                                        tmp_path: Path) -> None:
+                                                        tmp_path: Path, folder: bool) -> None:
     """Issue 39: a network title changed in the console is written into the `.s7res` that
-    holds its text id (only that line; the `.s7dcl` keeps the title's id), and read again."""
+    holds its text id (only that line; the `.s7dcl` keeps the title's id), and read again —
+    the block opened as a file or its folder."""
     path = _copy(tmp_path, "s7", "Main.s7dcl")
     res = path.with_suffix(".s7res")
     before = res.read_bytes()
+    if folder:
+        path = path.parent
     assert window.load(path)
     assert window.editor.edits.set_comments(1, ["Lamp two, 5 s later"])
     qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
