@@ -151,3 +151,24 @@ def test_s7_examples_run_the_same_on_the_native_scan(name: str, monitored: bool,
         python, native = engines
         assert python.memory.areas == native.memory.areas
         assert not monitored or python.power_flow == native.power_flow
+
+
+def test_returnfalse_spells_its_value_in_its_name(tmp_path: Path) -> None:
+    """SD's `ReturnFalse()` is a RET of FALSE: the call's ENO is 0 when it is taken."""
+    (tmp_path / "F.s7dcl").write_text(
+        'FUNCTION "F" : Void\n VAR_INPUT\n  a : Bool;\n END_VAR\n'
+        + _net("RUNG wire#powerrail\n Contact( #a )\n ReturnFalse()\n END_RUNG")
+        + "END_FUNCTION\n", encoding="utf-8")
+    (tmp_path / "Main.s7dcl").write_text(
+        'ORGANIZATION_BLOCK "Main"\n'
+        + _net('RUNG wire#powerrail\n "F"( a := %I0.0 )\n Coil( %Q0.1 )\n END_RUNG')
+        + "END_ORGANIZATION_BLOCK\n", encoding="utf-8")
+    result = parse_file(tmp_path)
+    assert result.diagnostics == []
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    for a, eno in ((1, 0), (0, 1)):
+        engine.memory.set_bit(parse_absolute("%I0.0")[0], a)
+        engine.scan()
+        assert engine.memory.bit(parse_absolute("%Q0.1")[0]) == eno
