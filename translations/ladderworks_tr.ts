@@ -2524,14 +2524,14 @@
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="524"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="134"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="136"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
@@ -2581,152 +2581,152 @@
         <translation>Siemens S7-1200 SimaticML dışa aktarımları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="124"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="126"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="137"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="181"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="183"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="199"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="217"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="219"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="220"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="556"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="207"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="207"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="250"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="252"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="260"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="84"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="104"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="87"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="112"/>
         <location filename="../ladderworks/gui/save_refusal.py" line="41"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="104"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="108"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="108"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="500"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="112"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="437"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="539"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="555"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="556"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="572"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="409"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="436"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="441"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="455"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="483"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="478"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="499"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="503"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
@@ -2832,22 +2832,22 @@
         <translation>Program bir {0} programı olamaz: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="68"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="71"/>
         <source>Open a folder of exported blocks</source>
         <translation>Dışa aktarılmış blokların klasörünü aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="78"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="81"/>
         <source>{0}: no changes to save</source>
         <translation>{0}: kaydedilecek değişiklik yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="84"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="87"/>
         <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
         <translation>{0} dışa aktarılmış blokların klasörü: değişen programı bir dosya adıyla kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="111"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="115"/>
         <source>Saved {0} in the folder {1} (its other files are unchanged)</source>
         <translation>{0}, {1} klasörüne kaydedildi (klasörün öteki dosyaları değişmedi)</translation>
     </message>
