@@ -304,6 +304,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="180"/>
         <source>Network</source>
         <translation>Devre</translation>
     </message>
@@ -333,42 +334,42 @@
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
         <source>All addresses — uses: {0}</source>
         <translation>Tüm adresler — kullanım: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="300"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="316"/>
         <source>{0} is not used in the program</source>
         <translation>{0} programda kullanılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="324"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="319"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="339"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="350"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="345"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Adres veya sembol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="347"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="342"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Bu adresin çapraz &amp;referansı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="348"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="343"/>
         <source>List every place the program reads and writes the address</source>
         <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
     </message>
@@ -1462,241 +1463,251 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="469"/>
-        <source>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</source>
-        <translation>&apos;{text}&apos; bir {type}: 64 bitlik değerler izleme tablosunda henüz gösterilmiyor</translation>
+        <source>&apos;{text}&apos; is a {type}: the watch table has no format for it</source>
+        <translation>&apos;{text}&apos; bir {type}: izleme tablosunda bunun için bir biçim yok</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <source>&apos;{text}&apos; is not a date from D#1990-01-01 to D#2169-06-06 (e.g. D#2024-01-31)</source>
+        <translation>&apos;{text}&apos; D#1990-01-01 ile D#2169-06-06 arasında bir tarih değil (ör. D#2024-01-31)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <source>&apos;{text}&apos; is not a time of day (e.g. TOD#12:30:00.000)</source>
+        <translation>&apos;{text}&apos; bir günün saati değil (ör. TOD#12:30:00.000)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
         <source>the value has {length} characters: at most {limit} are read</source>
         <translation>değer {length} karakter: en çok {limit} karakter okunur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
         <source>no modify value to write</source>
         <translation>yazılacak değiştirme değeri yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
         <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
         <translation>&apos;{text}&apos; TRUE ya da FALSE (veya 1, 0) değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="475"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
         <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
         <translation>&apos;{text}&apos; bir tam sayı değil (ör. 12, -3, 16#FF, 2#0101)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="477"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
         <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
         <translation>&apos;{text}&apos; aralığın dışında: {low} ile {high} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
         <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
         <translation>&apos;{text}&apos; bir gerçel sayı değil (ör. 1.5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="485"/>
         <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
         <translation>&apos;{text}&apos; bir süre değil (ör. T#5S_300MS, T#1M30S ya da 1500 ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
         <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
         <translation>&apos;{text}&apos; Latin-1 kümesinden tek bir karakter değil (ör. &apos;A&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
         <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
         <translation>&apos;{text}&apos; bir dizenin tutamayacağı karakterler içeriyor (yalnızca Latin-1 kümesi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="486"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
         <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
         <translation>&apos;{text}&apos; dizenin {length} karakterinden uzun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="488"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
         <source>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</source>
         <translation>&apos;{name}&apos; ne bir harita dosyası ne de programın bir global veri bloğu (global veri blokları: {names})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="492"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="497"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; bir S7 adresi (ör. %I0.0, %MW2, %DB1.DBW4) ya da etiket değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: {expected} bekleniyordu, &apos;{found}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="501"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: metin {what} içinde bitiyor (kesilmiş mi?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; LadderWorks&apos;ün benzettiği bir komut değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; ne bir etiket, ne bloğun bir üyesi, ne de bir adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} için {pin} ucu gerekli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: {part} bağlantıları izlenemiyor ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="512"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: bu blokta &apos;{label}&apos; etiketi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="509"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: {language} network&apos;ü gösterilir, benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: çağrılan &apos;{block}&apos; bloğu programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
         <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
         <translation>network {network}: {text} okunan etiket tablolarının hiçbirinde yok; LadderWorks ona kendi yerini veriyor ({type})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: &apos;{type}&apos; tipinde {part} benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: &apos;{text}&apos; için yer kalmadı (DB üyeleri ve örnekler 10000 baytı paylaşır)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="526"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>dosya {size} MB: {limit} MB üzerindeki S7 dışa aktarımları okunmaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>tag table: {why}</source>
         <translation>etiket tablosu: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
         <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
         <translation>network {network}, satır {row}, sütun {column}: kontağın ya da bobinin operandı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="533"/>
         <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
         <translation>network {network}, satır {row}, sütun {column}: &apos;{name}&apos; bir S7 elemanı değil (S7 paletini kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>bu değişiklik S7 bloğunun dosyasına yazılamıyor: TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, satır {line}: {expected} bekleniyordu, &apos;{found}&apos; bulundu: kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, satır {line}: metin {what} içinde bitiyor (kesilmiş mi?): kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>S7 bloğunun dosyası artık okunamıyor (satır {line}): hiçbir şey yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; S7 bloğunun dosya biçiminde yazılamıyor: bu değişikliği TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
         <source>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</source>
         <translation>&apos;{text}&apos; bir S7 atlama etiketi değil: harfler, rakamlar ve _; rakamla başlamaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
         <source>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</source>
         <translation>network {network} henüz tamamlanmış bir S7 network&apos;ü değil (S7&apos;de olmayan bir eleman, eksik ya da hâlâ &lt;???&gt; olan bir operand): S7 bloğunun dosyası yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="556"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="559"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="567"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="570"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="573"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="578"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="576"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="581"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="579"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="584"/>
         <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
         <translation>{block}, network {network}: &apos;{scope}&apos; kapsamlı UId {uid} erişimi LadderWorks&apos;ün okuduğu hiçbir şeyi adlandırmıyor; ona bağlı parçalar benzetilmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="582"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="587"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>
@@ -2513,14 +2524,14 @@
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="524"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="134"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="136"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
@@ -2570,152 +2581,152 @@
         <translation>Siemens S7-1200 SimaticML dışa aktarımları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="124"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="126"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="135"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="137"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="181"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="183"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="199"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="217"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="219"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="218"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="540"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="220"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="556"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="207"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="207"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="250"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="252"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="260"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="84"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="104"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="87"/>
         <location filename="../ladderworks/gui/folder_program.py" line="108"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="112"/>
         <location filename="../ladderworks/gui/save_refusal.py" line="41"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="104"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="108"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="411"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="484"/>
-        <location filename="../ladderworks/gui/folder_program.py" line="108"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="500"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="112"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="437"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="539"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="555"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="556"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="572"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="409"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="436"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="441"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="455"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="483"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="478"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="499"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="479"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="503"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
@@ -2821,22 +2832,22 @@
         <translation>Program bir {0} programı olamaz: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="68"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="71"/>
         <source>Open a folder of exported blocks</source>
         <translation>Dışa aktarılmış blokların klasörünü aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="78"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="81"/>
         <source>{0}: no changes to save</source>
         <translation>{0}: kaydedilecek değişiklik yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="84"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="87"/>
         <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
         <translation>{0} dışa aktarılmış blokların klasörü: değişen programı bir dosya adıyla kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/folder_program.py" line="111"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="115"/>
         <source>Saved {0} in the folder {1} (its other files are unchanged)</source>
         <translation>{0}, {1} klasörüne kaydedildi (klasörün öteki dosyaları değişmedi)</translation>
     </message>
@@ -5352,11 +5363,21 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/watch_texts.py" line="18"/>
+        <source>Date</source>
+        <translation>Tarih</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="19"/>
+        <source>Time of day</source>
+        <translation>Günün saati</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="20"/>
         <source>Character</source>
         <translation>Karakter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_texts.py" line="19"/>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="21"/>
         <source>String</source>
         <translation>Dize</translation>
     </message>

@@ -12,7 +12,7 @@ from ladderworks.core.address import Address, AddressError, looks_like_address
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.instructions import spec_for
 from ladderworks.core.symbols import SymbolTable, describe, resolve
-from ladderworks.core.tag_names import TagNames, network_titles
+from ladderworks.core.tag_names import TagNames, network_names
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 
 HEADERS = ("ADDRESS", "SYMBOL", "NETWORK", "LABEL", "UNIT", "LINE", "INSTRUCTION", "ELEMENT",
@@ -47,7 +47,7 @@ def element_text(use: Use) -> str:
 def use_row(use: Use, symbols: SymbolTable | None, dialect: str | None = None,
             names: TagNames | None = None, titles: Sequence[str] = ()) -> tuple[str, ...]:
     """One table row: the columns of HEADERS (a Delta program's in Delta's spelling; an S7
-    program's by tag, its network by the S7 network's title)."""
+    program's by tag, its network as TIA names it: `Network 3: Title`)."""
     spelled = spelling(dialect)
     if names is not None and names.typed:
         spec = spec_for(use.instruction)
@@ -55,7 +55,7 @@ def use_row(use: Use, symbols: SymbolTable | None, dialect: str | None = None,
         written = names.spelled(use.address, names.width_of(use.address, use.width)) or "-"
         name = spelled.name(spec) if spec is not None else use.instruction
         network = titles[use.network] if use.network < len(titles) else ""
-        return (written, named or "-", network or str(use.network + 1),
+        return (written, named or "-", network or "-",
                 use.label or "-", use.unit or "-", str(use.line or "-"), name,
                 element_text(use), _ACCESS_TEXT[use.access])
     if spelled.dialect:
@@ -88,7 +88,7 @@ def _xref(args: argparse.Namespace) -> int:
         return 1
     symbols = program.symbols
     names = TagNames.of(program)
-    titles = network_titles(program) if names.typed else []
+    titles = network_names(program) if names.typed else []
     queries: list[tuple[str, Address]] = []
     for text in args.addresses:
         try:

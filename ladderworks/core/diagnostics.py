@@ -467,7 +467,12 @@ MESSAGES: dict[str, str] = {
     "watch-struct": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is a {type}: watch one of its members (e.g. {text}.Q)"),
     "watch-wide": QT_TRANSLATE_NOOP(
-        "Diagnostic", "'{text}' is a {type}: 64-bit values are not shown in the watch table yet"),
+        "Diagnostic", "'{text}' is a {type}: the watch table has no format for it"),
+    "watch-date": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a date from D#1990-01-01 to D#2169-06-06 "
+        "(e.g. D#2024-01-31)"),
+    "watch-tod": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a time of day (e.g. TOD#12:30:00.000)"),
     "watch-long": QT_TRANSLATE_NOOP(
         "Diagnostic", "the value has {length} characters: at most {limit} are read"),
     "watch-empty": QT_TRANSLATE_NOOP("Diagnostic", "no modify value to write"),

@@ -57,7 +57,9 @@ class InstructionSpec:
     title: str = ""  # English title
     title_tr: str = ""  # Turkish title, the seed manual's words
     opcode: int = 0  # the binary's opcode (basic: 1..; functional and END: FUNCTION_BASE + SUB)
-    negated: bool = False  # basic: reads or writes the inverted bit (RD.NOT, WRT.NOT, ...)
+    # basic: reads or writes the inverted bit (RD.NOT, WRT.NOT, ...); a jump/call flow: acts
+    # when its input is 0 (S7's JMPN)
+    negated: bool = False
     combine: Combine = Combine.NONE  # basic contacts and stack ops
     write: Write = Write.NONE  # basic coils
     flow: Flow = Flow.NONE  # functional: its part in the program's structure

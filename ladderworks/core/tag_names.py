@@ -193,6 +193,28 @@ def network_titles(program: Program) -> list[str]:
     return titles
 
 
+def network_names(program: Program, word: str = "Network") -> list[str]:
+    """The source network each of `program`'s networks lowers from, as TIA names it: `Network
+    3: Title` (`Network 3` untitled; `word` in the caller's language), a called block's inlined
+    networks under the calling network, "" before the first (the start values); the
+    `network_titles` when the program keeps no source model."""
+    from ladderworks.core.ladder.source_model import source_networks
+
+    found = source_networks(program)
+    if found is None:
+        return network_titles(program)
+    return [network_name(number, title, word) for number, title in found]
+
+
+def network_name(number: int, title: str, word: str = "Network") -> str:
+    """`Network 3: Title`, `Network 3` (no title, or the title is that), "" for number 0."""
+    if not number:
+        return ""
+    plain = f"{word} {number}"
+    return plain if not title or title == plain or title == f"Network {number}" \
+        else f"{plain}: {title}"
+
+
 def typed_text(raw: int, type_name: str, width: int) -> str | None:
     """A raw value of `width` bytes as its type shows it, as TIA's watch table does (a Time
     `T#5S`, a Real `21.5`, an Int signed); None for a type shown as a plain number (a Byte, a

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, Qt
 from PySide6.QtWidgets import QMessageBox
 
+from ladderworks.core import dialects
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, has_errors
 from ladderworks.core.dialects.delta.dvp_program import save_refused
 from ladderworks.core.dialects.fatek.pdw_file import is_pdw_path
@@ -73,6 +74,7 @@ class FileActions(_Window):
     autosaver: Autosaver
     _last_save_result: bool
     save_as_offered: bool  # inside the Save As a refused Save offered (save_refusal.py)
+    pending_companions: dict[Path, bytes] = {}
     if TYPE_CHECKING:  # what MainWindow provides
         editor: LadderEditor
         text_view: ProgramTextView
@@ -363,6 +365,7 @@ class FileActions(_Window):
         """The bytes Save writes to `path` and whether networks with errors are kept as
         drawings; None when nothing is written (declined, or refused: `save_refusal`)."""
         self._last_save_result = False
+        self.pending_companions = {}
         if self.model.showing_text:
             text = self.text_view.toPlainText()
             text = text if text.endswith("\n") else text + "\n"
@@ -373,7 +376,18 @@ class FileActions(_Window):
         self.errors.set_diagnostics(diagnostics)
         if drafts:
             self.errors.show()
-        return self._encoded(path, lambda: self.document.encode(program)), drafts
+        data = self._encoded(path, lambda: self.document.encode(program))
+        family = dialects.get(program.dialect)
+        if data is not None and family is not None:  # S7: the changed titles' .s7res
+            self.pending_companions = family.companion_files(program, path)
+        return data, drafts
+
+    def write_companions(self) -> None:
+        """Write the files Save writes beside the program's (`Dialect.save_companions`), each
+        atomically; OSError, ReadOnlyFile."""
+        for extra, data in self.pending_companions.items():
+            atomic_write_bytes(extra, data)
+        self.pending_companions = {}
 
     def save_answer(self) -> bool:
         """What Save returns when `bytes_to_save` gave nothing (True: Save As saved it)."""
@@ -402,6 +416,8 @@ class FileActions(_Window):
             self.document.write(path, data)
             name = path.with_name(path.name + ".prm")
             self.parameters.save(path, self.dialect)
+            name = next(iter(self.pending_companions), name)
+            self.write_companions()
         except ReadOnlyFile:
             self.warn(translate("MainWindow", "Save"), translate(
                 "MainWindow", "{0} is read-only and is not replaced.").format(name))

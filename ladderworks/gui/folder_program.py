@@ -58,6 +58,9 @@ class Window(Protocol):
     def save_answer(self) -> bool:
         """What Save returns when `bytes_to_save` wrote nothing (True: Save As saved it)."""
 
+    def write_companions(self) -> None:
+        """Write the files Save writes beside the program's (an S7 block's `.s7res`)."""
+
 
 def open_dialog(window: Window) -> None:
     """File › Open folder: choose a folder of exports and open it as one program."""
@@ -100,6 +103,7 @@ def save(window: Window, path: Path) -> bool:
         return window.save_answer()
     try:
         document.write_entry(data)
+        window.write_companions()  # the .s7res of a changed title
     except ReadOnlyFile:
         window.warn(translate("MainWindow", "Save"), translate(
             "MainWindow", "{0} is read-only and is not replaced.").format(entry))

@@ -15,6 +15,8 @@ from ladderworks.core.plc.session import PlcRun
 from ladderworks.core.plc.typed import real_bits
 from ladderworks.core.tag_names import (
     TagNames,
+    network_name,
+    network_names,
     network_titles,
     split_names,
     typed_text,
@@ -203,3 +205,21 @@ def test_a_recorded_s7_scenario_names_its_tags_and_replays() -> None:
     scenario = parse_scenario(written, "again", program.symbols, program.dialect)
     assert scenario.ok, scenario.error_texts()
     assert run_scenario(again, scenario).passed
+
+
+def test_xref_lists_uses_under_the_s7_network_number_and_title(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """Issue 39: a use under `Network n: Title` of its S7 network (TIA's), the uses inside a
+    called FC/FB (lowered inline) under the calling network of OB1."""
+    calls = EXAMPLES / "s7" / "calls"
+    program = parse_file(calls).program
+    names = network_names(program)
+    assert len(names) == len(program.networks)
+    assert set(names) - {""} == {"Network 1: The motor held by the FC",
+                                 "Network 2: The fan 3 s after the motor, by the FB"}
+    assert main(["xref", str(calls), '"Fan"', '"Gecikme_DB".Cikis']) == 0
+    rows = capsys.readouterr().out.splitlines()[1:]
+    assert rows and all("Network 2: The fan 3 s after the motor, by the FB" in r for r in rows)
+    assert not any("On-delay in the FB instance" in r for r in rows)  # the FB's own title
+    assert network_name(3, "") == "Network 3" and network_name(3, "Network 3") == "Network 3"
+    assert network_name(3, "Pompa", "Ağ") == "Ağ 3: Pompa" and network_name(0, "x") == ""

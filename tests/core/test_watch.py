@@ -27,6 +27,7 @@ from ladderworks.core.watch.rows import (
 from ladderworks.core.watch.values import (
     Format,
     Memory,
+    default_format,
     formats,
     parse,
     show,
@@ -257,19 +258,72 @@ def test_a_block_opened_alone_is_watched_by_its_interface() -> None:
     assert show(elapsed.place, elapsed.fmt, memory) == "T#200MS"
 
 
-def test_a_64_bit_type_is_named_not_shown() -> None:
+def test_an_ltod_is_named_not_shown() -> None:
     symbols = SymbolTable()
-    symbols.by_symbol['"Big"'] = Address(Area.D, 0)
-    symbols.types['"Big"'] = ("LReal", 8)
+    symbols.by_symbol['"Clock"'] = Address(Area.D, 0)
+    symbols.types['"Clock"'] = ("LTOD", 8)
     with pytest.raises(WatchError) as wide:
-        resolve('"Big"', symbols, "s7")
+        resolve('"Clock"', symbols, "s7")
     assert wide.value.code == "watch-wide"
+
+
+@pytest.mark.parametrize(("type_name", "fmt", "text", "raw", "shown"), [
+    ("LReal", Format.REAL, "-1.25", 0xBFF4000000000000, "-1.25"),
+    ("LReal", Format.REAL, "0.1", 0x3FB999999999999A, "0.1"),  # every digit of a double
+    ("LInt", Format.SDEC, "-2", 0xFFFFFFFFFFFFFFFE, "-2"),
+    ("LInt", Format.SDEC, str(-2**63), 2**63, str(-2**63)),
+    ("ULInt", Format.DEC, str(2**64 - 1), 2**64 - 1, str(2**64 - 1)),
+    ("LWord", Format.HEX, "16#0123456789ABCDEF", 0x0123456789ABCDEF, "16#0123456789ABCDEF"),
+    ("LTime", Format.TIME, "LT#1d2h3m4s5ms6us7ns", 93_784_005_006_007,
+     "LT#1D_2H_3M_4S_5MS_6US_7NS"),
+    ("LTime", Format.TIME, "LTIME#-5s", (-5 * 10**9) & (2**64 - 1), "LT#-5S"),
+    ("Date", Format.DATE, "D#2024-01-31", 12_448, "D#2024-01-31"),
+    ("Date", Format.DATE, "DATE#1990-1-1", 0, "D#1990-01-01"),
+    ("Time_Of_Day", Format.TOD, "TOD#12:30:00.000", 45_000_000, "TOD#12:30:00.000"),
+    ("TOD", Format.TOD, "23:59:59.5", 86_399_500, "TOD#23:59:59.500"),
+])
+def test_64_bit_dates_and_times_of_day_in_the_memorys_byte_order(
+        type_name: str, fmt: Format, text: str, raw: int, shown: str) -> None:
+    """Issue 39: LReal, LInt, ULInt, LWord, LTime (8 bytes), Date and Time_Of_Day as TIA's
+    watch table shows them, written and read in S7's byte order (the high byte first)."""
+    symbols = SymbolTable()
+    symbols.by_symbol['"V"'] = Address(Area.D, 8)
+    symbols.types['"V"'] = (type_name, 0)
+    place = resolve('"V"', symbols, "s7")
+    assert default_format(place, "s7") is fmt and fmt in formats(place)
+    memory = PlcMemory("big")
+    store(parse(place, fmt, text), memory.set_bit, memory.write)
+    width = place.width
+    assert memory.read(Address(Area.D, 8), width) == raw
+    assert memory.read(Address(Area.D, 8), 1) == raw >> (8 * width - 8)  # big-endian
+    assert show(place, fmt, _memory(memory)) == shown
+    little = PlcMemory("little")
+    store(parse(place, fmt, text), little.set_bit, little.write)
+    assert little.read(Address(Area.D, 8), 1) == raw & 0xFF  # a little-endian family's order
+
+
+@pytest.mark.parametrize(("fmt", "width", "text", "code"), [
+    (Format.DATE, 2, "D#2024-02-30", "watch-date"),
+    (Format.DATE, 2, "D#1989-12-31", "watch-date"),
+    (Format.DATE, 2, "D#2169-06-07", "watch-date"),
+    (Format.TOD, 4, "TOD#24:00:00", "watch-tod"),
+    (Format.TOD, 4, "noon", "watch-tod"),
+    (Format.TIME, 8, "LT#5x", "watch-time"),
+    (Format.TIME, 8, f"LT#{2**63}ns", "watch-time"),
+    (Format.REAL, 8, "inf", "watch-real"),
+    (Format.SDEC, 8, str(2**63), "watch-range"),
+])
+def test_bad_wide_and_dated_values_are_refused(fmt: Format, width: int, text: str,
+                                               code: str) -> None:
+    with pytest.raises(WatchError) as refused:
+        parse(_place(Area.R, 0, width), fmt, text)
+    assert refused.value.code == code
 
 
 @given(text=st.one_of(st.text(max_size=40), st.from_regex(r"[T#0-9._smhdSMHD+-]{1,30}"),
                       st.just("9" * 5000), st.just("T#" + "9" * 290 + "d"),
                       st.just("9" * 299)),
-       fmt=st.sampled_from(list(Format)), width=st.sampled_from([0, 1, 2, 4]))
+       fmt=st.sampled_from(list(Format)), width=st.sampled_from([0, 1, 2, 4, 8]))
 def test_any_typed_value_is_stored_or_refused_never_a_crash(text: str, fmt: Format,
                                                             width: int) -> None:
     place = _place(Area.R, 4, width, "String[8]" if fmt is Format.STRING else "",

@@ -191,3 +191,32 @@ def test_an_s7_comparison_from_the_palette_takes_its_two_operands(
     contact = window.editor.networks[index].cells[(0, 0)]
     assert isinstance(contact, Contact) and contact.texts == ('"Geçen Süre"', "T#3s")
     assert contact.mark == ">\nInt"
+
+
+@pytest.mark.parametrize(("row", "mark", "operand", "name"),
+                         [("S7.JMPN", "JMPN", "son", "S7.JMPN"),
+                          ("S7.RET", "RET", "FALSE", "S7.RET")])
+def test_jmpn_and_ret_from_the_palette_are_coils_that_lower(
+        qtbot: QtBot, window: MainWindow, row: str, mark: str, operand: str,
+        name: str) -> None:
+    """Issue 39: the palette's JMPN and RET place TIA's -(JMPN)- / -(RET)- coils, their
+    label or value asked in the operand dialog; the program lowers to the row."""
+    from ladderworks.core import ladder as core
+
+    assert window.load(EXAMPLES / "s7" / "jumps" / "Main.s7dcl")
+    model = window.editor.model
+    index = model.blank_index()
+    edits = window.editor.edits
+    edits.open_function_dialog(index, 0, 1, row)
+    dialog = edits.operand_dialog
+    assert dialog is not None and [e.text() for e in dialog.edits] == ["<???>"]
+    dialog.edits[0].setText(operand)
+    dialog.accept()
+    network = model.networks[index]
+    coil = next(e for e in network.cells.values() if isinstance(e, core.Coil))
+    assert (coil.mark, coil.texts) == (mark, (operand,))
+    model.apply(index, model.prepare(index, lambda n: core.place_wired(
+        n, 0, 0, Contact(texts=('"Start"',)))))
+    program, found = model.program()
+    assert program is not None and not found, found
+    assert name in {ins.name for net in program.networks for ins in net.instructions}

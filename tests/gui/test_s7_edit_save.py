@@ -275,3 +275,27 @@ def test_a_box_operand_changed_in_the_operand_dialog_is_saved(
     after = path.read_bytes()
     assert b"T#3s" in after and b"T#10s" not in after
     assert set(_changed_lines(before, after)) <= set(_network_lines(before, form))
+
+
+@pytest.mark.parametrize("folder", [False, True], ids=["file", "folder"])
+def test_a_changed_title_is_saved_into_the_s7res_beside(qtbot: QtBot, window: MainWindow,
+                                                        tmp_path: Path, folder: bool) -> None:
+    """Issue 39: a network title changed in the console is written into the `.s7res` that
+    holds its text id (only that line; the `.s7dcl` keeps the title's id), and read again —
+    the block opened as a file or its folder."""
+    path = _copy(tmp_path, "s7", "Main.s7dcl")
+    res = path.with_suffix(".s7res")
+    before = res.read_bytes()
+    if folder:
+        path = path.parent
+    assert window.load(path)
+    assert window.editor.edits.set_comments(1, ["Lamp two, 5 s later"])
+    qtbot.keyClick(window.editor, Qt.Key.Key_S, CTRL)
+    assert not window.is_modified(), window.last_warning
+    after = res.read_bytes()
+    assert _changed_lines(before, after) == [6]
+    assert b"    en-US: Lamp two, 5 s later\r\n" in after or \
+        b"    en-US: Lamp two, 5 s later\n" in after
+    assert b"tr-TR: 5 s sonra ikinci lamba" in after  # the other culture kept
+    assert window.load(path)
+    assert window.editor.networks[1].comments[0] == "Lamp two, 5 s later"

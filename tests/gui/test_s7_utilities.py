@@ -116,7 +116,7 @@ def test_the_cross_reference_lists_tags_under_their_networks(window: MainWindow,
     dock.show_address('"Motor"')
     assert model.rowCount() == 3
     assert [model.data(model.index(r, 0)) for r in range(3)] == ["%Q0.0"] * 3
-    assert "Start sets the motor" in model.data(model.index(0, 2))
+    assert model.data(model.index(0, 2)) == "Network 1: Start sets the motor"  # TIA's name
     assert model.data(model.index(0, 7)) == "Motor contactor"  # the tag's comment
     assert dock.summary.text().startswith('"Motor" — uses: 3')
     dock.show_address("Yok")

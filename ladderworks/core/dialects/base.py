@@ -13,6 +13,8 @@ from ladderworks.core.dialects.devices import DeviceMap
 from ladderworks.core.instructions import InstructionSpec, lookup
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from ladderworks.core.dialects.device_tables import DeviceTables
     from ladderworks.core.il.program import Network, Program
     from ladderworks.core.il.textform import TextForm
@@ -66,6 +68,9 @@ class Dialect:
     # engine networks do not show (S7: an operand written another way for the same address);
     # Save then asks `writer` though the networks are as read
     changed: str = ""
+    # "module:function": (program, path) -> {file: bytes} Save writes beside the program's file
+    # `path` (S7: the `.s7res` texts of changed network titles); {} for none
+    save_companions: str = ""
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
     spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
     # the rows each module of core/plc/functions implements for it (plc/families.py merges them)
@@ -128,6 +133,14 @@ class Dialect:
         text = _function(self.writer)(program)
         assert text is None or isinstance(text, str)
         return text
+
+    def companion_files(self, program: Program, path: Path) -> dict[Path, bytes]:
+        """The files Save writes beside `path` for `program` (`save_companions`), else {}."""
+        if not self.save_companions:
+            return {}
+        found = _function(self.save_companions)(program, path)
+        assert isinstance(found, dict)
+        return found
 
     def source_changed(self, program: Program) -> bool:
         """True when `changed` says the program differs from its file beyond its networks."""

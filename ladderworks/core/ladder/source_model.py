@@ -32,6 +32,10 @@ class SourceModel(Protocol):
         """The program's engine networks each drawn network lowered to (same order)."""
         ...
 
+    def titles(self) -> list[str]:
+        """The title of each source network ("" for none), in order."""
+        ...
+
     def rebuild(self, networks: list[LadderNetwork]) -> tuple[Program, list[Diagnostic]]:
         """The program of a drawing (networks changed, added or removed), lowered again; its
         `model` is the model of the new drawing."""
@@ -67,6 +71,27 @@ def source_model(program: Program | None) -> SourceModel | None:
     """The program's model of its source when its dialect keeps one that draws, else None."""
     model = program.model if program is not None else None
     return model if isinstance(model, SourceModel) else None
+
+
+def source_networks(program: Program) -> list[tuple[int, str]] | None:
+    """The source network each engine network of `program` lowers from, as (number from 1,
+    title): a block called from a network and lowered inline there counts as that network;
+    (0, "") before the first (the start values); None when the program keeps no source model."""
+    model = source_model(program)
+    if model is None:
+        return None
+    titles = model.titles()
+    found: list[tuple[int, str] | None] = [None] * len(program.networks)
+    for number, span in enumerate(model.spans(), start=1):
+        title = titles[number - 1] if number <= len(titles) else ""
+        for index in span:
+            if index < len(found):
+                found[index] = (number, title)
+    last = (0, "")  # a network in no span: the start values, a label after the last network
+    for index, here in enumerate(found):
+        last = here or last
+        found[index] = last
+    return [here or (0, "") for here in found]
 
 
 def source_file(program: Program | None) -> Path | None:

@@ -416,6 +416,8 @@ class _Generator:
         if flow in (Flow.JUMP, Flow.LABEL_JUMP, Flow.LABEL_JUMP_MAIN, Flow.CALL) \
                 and self.monitored:
             self.emit(f"{self.slot(index)} = {act}")
+        if spec.negated and flow in (Flow.JUMP, Flow.LABEL_JUMP, Flow.LABEL_JUMP_MAIN, Flow.CALL):
+            act = f"(not {act})"  # a flow taken when its input is 0 (S7's JMPN)
         target = number_of(op.params[0]) if op.params else None
         if flow is Flow.JUMP:
             self.jump_ids += 1

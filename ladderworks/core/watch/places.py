@@ -19,9 +19,10 @@ from ladderworks.core.symbols import SymbolTable
 # the bytes a value of an elementary type takes (the S7 layout's; Bool: a bit)
 TYPE_WIDTHS = {"bool": 0, "byte": 1, "sint": 1, "usint": 1, "char": 1, "int": 2, "uint": 2,
                "word": 2, "dint": 4, "udint": 4, "dword": 4, "real": 4, "time": 4,
-               "date": 2, "tod": 4, "time_of_day": 4}
-# elementary types of 64 bits: named, not shown yet (the formats read at most 32 bits)
-WIDE_TYPES = frozenset({"lreal", "lint", "ulint", "lword", "ltime", "ltod", "ldt"})
+               "date": 2, "tod": 4, "time_of_day": 4, "lreal": 8, "lint": 8, "ulint": 8,
+               "lword": 8, "ltime": 8}
+# elementary types of 64 bits the table does not show (an LTOD, an LDT: no format of theirs)
+WIDE_TYPES = frozenset({"ltod", "ldt", "date_and_ltime"})
 _STRING_RE = re.compile(r"^string(?:\s*\[\s*(\d+)\s*\])?$", re.I)
 
 

@@ -2,8 +2,10 @@
 read back into the bytes it writes (in the memory's byte order).
 
 Formats: Bool (TRUE/FALSE), DEC (unsigned), DEC+/- (signed), Hex (`16#00FF`), Bin
-(`2#0000_0101`), Real, Time (`T#1M_30S_500MS`), Char (`'A'`), String (`'text'`, an S7 String:
-max length, length, characters). docs/plc-utilities.md, "Watch table".
+(`2#0000_0101`), Real (LReal in 8 bytes), Time (`T#1M_30S_500MS`; 8 bytes: an LTime
+`LT#5S_3NS`), Date (`D#2024-01-31`), Time_Of_Day (`TOD#12:30:00.000`), Char (`'A'`), String
+(`'text'`, an S7 String: max length, length, characters); values of 1, 2, 4 or 8 bytes.
+docs/plc-utilities.md, "Watch table".
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from enum import StrEnum
 from ladderworks.core import dialects
 from ladderworks.core.address import Address
 from ladderworks.core.plc import typed
+from ladderworks.core.watch import dates
 from ladderworks.core.watch.places import WatchError, WatchPlace
 
 TIME_UNITS = (("D", 86_400_000), ("H", 3_600_000), ("M", 60_000), ("S", 1000), ("MS", 1))
@@ -34,6 +37,8 @@ class Format(StrEnum):
     BIN = "bin"
     REAL = "real"
     TIME = "time"
+    DATE = "date"
+    TOD = "tod"
     CHAR = "char"
     STRING = "string"
 
@@ -43,7 +48,9 @@ _TYPE_FORMATS = {"bool": Format.BOOL, "sint": Format.SDEC, "int": Format.SDEC,
                  "dint": Format.SDEC, "usint": Format.DEC, "uint": Format.DEC,
                  "udint": Format.DEC, "byte": Format.HEX, "word": Format.HEX,
                  "dword": Format.HEX, "real": Format.REAL, "time": Format.TIME,
-                 "char": Format.CHAR}
+                 "char": Format.CHAR, "lreal": Format.REAL, "lint": Format.SDEC,
+                 "ulint": Format.DEC, "lword": Format.HEX, "ltime": Format.TIME,
+                 "date": Format.DATE, "tod": Format.TOD, "time_of_day": Format.TOD}
 
 
 def formats(place: WatchPlace) -> list[Format]:
@@ -53,8 +60,12 @@ def formats(place: WatchPlace) -> list[Format]:
     if place.string_length is not None:
         return [Format.STRING, Format.HEX]
     found = [Format.DEC, Format.SDEC, Format.HEX, Format.BIN]
-    if place.width == 4:
+    if place.width in (4, 8):
         found += [Format.REAL, Format.TIME]
+    if place.width == 4:
+        found.append(Format.TOD)
+    if place.width == 2:
+        found.append(Format.DATE)
     if place.width == 1:
         found.append(Format.CHAR)
     return found
@@ -82,13 +93,15 @@ class Memory:
     read: Callable[[Address, int], int]
 
 
-# the integer types of a width, signed and unsigned (plc/typed.py: their limits, wrapping)
-_SIGNED = {1: typed.ValueType.SINT, 2: typed.ValueType.INT, 4: typed.ValueType.DINT}
-_UNSIGNED = {1: typed.ValueType.USINT, 2: typed.ValueType.UINT, 4: typed.ValueType.UDINT}
+def _limits(width: int, signed: bool) -> tuple[int, int]:
+    """The range of an integer of `width` bytes (SInt … LInt, USInt … ULInt)."""
+    bits = 8 * width
+    return (-(1 << (bits - 1)), (1 << (bits - 1)) - 1) if signed else (0, (1 << bits) - 1)
 
 
 def _signed(raw: int, width: int) -> int:
-    return typed.wrap(raw, _SIGNED[width])
+    bits = 8 * width
+    return raw - (1 << bits) if raw >> (bits - 1) & 1 else raw
 
 
 def time_text(ms: int) -> str:
@@ -129,7 +142,7 @@ def show(place: WatchPlace, fmt: Format, memory: Memory) -> str:
                                                place.address.byte + 2 + i), 1))
                        for i in range(used))
         return f"'{text}'"
-    width = min(place.width, 4)
+    width = min(place.width, 8)
     raw = memory.read(place.address, width)
     if fmt is Format.HEX:
         return f"16#{raw:0{2 * width}X}"
@@ -139,8 +152,16 @@ def show(place: WatchPlace, fmt: Format, memory: Memory) -> str:
         return str(_signed(raw, width))
     if fmt is Format.REAL and width == 4:
         return _real_text(typed.bits_real(raw))
+    if fmt is Format.REAL and width == 8:
+        return repr(typed.bits_lreal(raw))  # every digit an LReal holds
     if fmt is Format.TIME and width == 4:
         return time_text(_signed(raw, 4))
+    if fmt is Format.TIME and width == 8:
+        return dates.ltime_text(_signed(raw, 8))
+    if fmt is Format.DATE and width == 2:
+        return dates.date_text(raw)
+    if fmt is Format.TOD and width == 4:
+        return dates.tod_text(raw)
     if fmt is Format.CHAR and width == 1:
         return _char_text(raw)
     return str(raw)
@@ -248,8 +269,10 @@ def parse(place: WatchPlace, fmt: Format, text: str) -> list[Write]:
     length = place.string_length
     if length is not None and fmt is Format.STRING:
         return _string(place, text, length)
-    width = min(place.width, 4)
+    width = min(place.width, 8)
     bits = 8 * width
+    if fmt in (Format.TIME, Format.DATE, Format.TOD) or (fmt is Format.REAL and width == 8):
+        return [Write(place.address, _dated(fmt, width, text) & ((1 << bits) - 1), width)]
     if fmt is Format.REAL:
         try:
             real = float(text.strip().replace(",", "."))
@@ -258,12 +281,6 @@ def parse(place: WatchPlace, fmt: Format, text: str) -> list[Write]:
         if not typed.fits(real, typed.ValueType.REAL):
             raise WatchError("watch-real", text=text.strip())
         return [Write(place.address, typed.real_bits(real) & 0xFFFFFFFF, width)]
-    if fmt is Format.TIME:
-        ms = time_ms(text)
-        if ms is None:
-            raise WatchError("watch-time", text=text.strip())
-        value = _in_range(ms, *typed.limits(typed.ValueType.TIME), text)
-        return [Write(place.address, value & 0xFFFFFFFF, width)]
     if fmt is Format.CHAR:
         chars = _quoted(text)
         if len(chars) != 1 or ord(chars) > 255:
@@ -272,10 +289,41 @@ def parse(place: WatchPlace, fmt: Format, text: str) -> list[Write]:
     value = _number(text)
     if value is None:
         raise WatchError("watch-number", text=text.strip())
-    low, high = typed.limits(_SIGNED[width])
+    low, high = _limits(width, True)
     if fmt is Format.DEC:
-        low, high = typed.limits(_UNSIGNED[width])
+        low, high = _limits(width, False)
     elif fmt is not Format.SDEC:  # Hex, Bin: any pattern (a negative: its two's complement)
-        high = typed.limits(_UNSIGNED[width])[1]
+        high = _limits(width, False)[1]
     value = _in_range(value, low, high, text)
     return [Write(place.address, value & ((1 << bits) - 1), width)]
+
+
+def _dated(fmt: Format, width: int, text: str) -> int:
+    """A Time / LTime, Date, Time_Of_Day or LReal typed, as the value its bytes hold."""
+    if fmt is Format.REAL:  # an LReal
+        try:
+            real = float(text.strip().replace(",", "."))
+        except ValueError as error:
+            raise WatchError("watch-real", text=text.strip()) from error
+        if real != real or real in (float("inf"), float("-inf")):
+            raise WatchError("watch-real", text=text.strip())
+        return typed.lreal_bits(real)
+    if fmt is Format.DATE:
+        days = dates.date_days(text)
+        if days is None:
+            raise WatchError("watch-date", text=text.strip())
+        return days
+    if fmt is Format.TOD:
+        ms = dates.tod_ms(text)
+        if ms is None:
+            raise WatchError("watch-tod", text=text.strip())
+        return ms
+    if width == 8:
+        ns = dates.ltime_ns(text)
+        if ns is None:
+            raise WatchError("watch-time", text=text.strip())
+        return ns
+    ms = time_ms(text)
+    if ms is None:
+        raise WatchError("watch-time", text=text.strip())
+    return _in_range(ms, *typed.limits(typed.ValueType.TIME), text)

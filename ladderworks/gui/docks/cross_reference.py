@@ -35,7 +35,7 @@ from ladderworks.core.dialects.spelling import Spelling, spelling
 from ladderworks.core.instructions import spec_for
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, resolve
-from ladderworks.core.tag_names import TagNames, names_for
+from ladderworks.core.tag_names import TagNames, names_for, network_name
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.diagnostic_texts import diagnostic_text
@@ -174,23 +174,18 @@ class CrossReferenceModel(QAbstractTableModel):
             return names.spelled(use.address, names.width_of(use.address, use.width))
         if column == 1:
             return names.name_of(use.address, use.width)
-        if column == 2:  # the S7 network's title (`Network 3` when it has none)
+        if column == 2:  # the S7 network as TIA names it: `Network 3: Title`
             title = self.titles[use.network] if use.network < len(self.titles) else ""
-            return title or str(use.network + 1)
+            return network_name(use.network + 1, title,
+                                translate("CrossReference", "Network"))
         found = self.symbols.lookup(use.address) if self.symbols is not None else None
         return use.comment or (found.comment if found is not None else "")
 
 
 def ladder_titles(networks: Sequence[LadderNetwork]) -> list[str]:
-    """The source network title each console network belongs to (its first comment line,
-    carried on until the next network with comments)."""
-    titles: list[str] = []
-    current = ""
-    for network in networks:
-        if network.comments:
-            current = network.comments[0]
-        titles.append(current)
-    return titles
+    """The title of each console network of an S7 program (one drawn network per S7 network:
+    its first comment line, "" when untitled)."""
+    return [network.comments[0] if network.comments else "" for network in networks]
 
 
 FIT_ROWS = 200  # rows measured to fit the columns to their contents

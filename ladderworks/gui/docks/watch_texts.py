@@ -15,6 +15,8 @@ FORMAT_NAMES: dict[Format, str] = {
     Format.BIN: QT_TRANSLATE_NOOP("WatchTable", "Bin"),
     Format.REAL: QT_TRANSLATE_NOOP("WatchTable", "Floating-point number"),
     Format.TIME: QT_TRANSLATE_NOOP("WatchTable", "Time"),
+    Format.DATE: QT_TRANSLATE_NOOP("WatchTable", "Date"),
+    Format.TOD: QT_TRANSLATE_NOOP("WatchTable", "Time of day"),
     Format.CHAR: QT_TRANSLATE_NOOP("WatchTable", "Character"),
     Format.STRING: QT_TRANSLATE_NOOP("WatchTable", "String"),
 }

@@ -43,4 +43,5 @@ DIALECT = Dialect(
     spelling="ladderworks.core.dialects.s7.printer:spelling",
     opener="ladderworks.core.dialects.s7.opening:open_path", refuse_changes="s7-save-changed",
     writer="ladderworks.core.dialects.s7.saving:write_changed",
-    changed="ladderworks.core.dialects.s7.saving:changed_since_read")
+    changed="ladderworks.core.dialects.s7.saving:changed_since_read",
+    save_companions="ladderworks.core.dialects.s7.res_save:companions")

@@ -2,7 +2,8 @@
 
 With EN 1 the actual inputs (and in/outs) are copied into the callee's interface members, the
 callee's networks run, then its outputs (and in/outs) are copied to the actuals; with EN 0 all
-of it is jumped over and the outputs keep their values. ENO is EN. An FC's members live once
+of it is jumped over and the outputs keep their values. ENO is EN, and 0 when a RET of the
+callee returned FALSE (its value: TRUE, FALSE or a Bool; none is TRUE). An FC's members live once
 for all its calls (`#FcName.x`), an FB's in its instance: an instance DB (`"Motor_DB".x`, the
 same place a scenario or another network names) or a multi-instance in the caller's statics
 (`#inst`). Recursion deeper than MAX_DEPTH is refused. docs/dialects.md, S7-1200 calls.
@@ -93,8 +94,8 @@ def lower_call(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
     enabled = lowering.new_relay(index, part)
     lowering.statement(part, [power], [], enabled)
     skip = lowering.new_label()
-    lowering.emit([Instruction("RD", enabled, line=line), Instruction("S7.NOT", line=line),
-                   Instruction("S7.JMP", None, (LabelRef(skip),), line=line)])
+    lowering.emit([Instruction("RD", enabled, line=line),
+                   Instruction("S7.JMPN", None, (LabelRef(skip),), line=line)])
     layout = lowering.layout
     for section in _IN:
         for member in callee.members(section):
@@ -110,7 +111,9 @@ def lower_call(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                 if powered is not None:
                     lowering.statement(part, [powered], [Instruction("WRT", target.address,
                                                                      line=line)], None)
-    networks, diagnostics = lowering.lower_callee(callee, scope)
+    eno = lowering.new_relay(index, part)  # 1 unless a RET returns 0
+    lowering.emit([Instruction("RD", ALWAYS_ON, line=line), Instruction("WRT", eno, line=line)])
+    networks, diagnostics = lowering.lower_callee(callee, scope, eno)
     lowering.networks.extend(networks)
     lowering.diagnostics.extend(diagnostics)
     for section in _OUT:
@@ -126,7 +129,25 @@ def lower_call(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                 if operand.kind is not OperandKind.CONSTANT:
                     _copy_out(lowering, index, part, source, operand)
     lowering.emit([Instruction("S7.LABEL", None, (LabelRef(skip),), line=line)])
-    return ("bit", enabled, False) if graph.used(part.uid) else None
+    return ("and", ("bit", enabled, False), ("bit", eno, False)) if graph.used(part.uid) \
+        else None
+
+
+def return_value(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
+                 power: Expr) -> None:
+    """A RET's value (TRUE, FALSE or a Bool; none: TRUE) into its called block's ENO when
+    the RET is taken; in a block not called (an OB) it is not used."""
+    if lowering.eno is None:
+        return
+    operand = graph.operand_in.get((part.uid, "operand"))
+    if operand is None:
+        return
+    value = lowering.bit_expr(operand, False, index, part)
+    line = part.line
+    lowering.statement(part, [("and", power, value)], [Instruction("SET", lowering.eno,
+                                                                    line=line)], None)
+    lowering.statement(part, [("and", power, ("not", value))], [Instruction(
+        "RST", lowering.eno, line=line)], None)
 
 
 def prepare(lowering: BlockLowering, part: Part) -> None:

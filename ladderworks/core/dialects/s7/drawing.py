@@ -126,7 +126,7 @@ class Drawer:
                      "NCoil": (shown, self.text(part, "bit")),
                      "PTCoil": (self.instance(part), self.text(part, "pt")),
                      "RTCoil": (self.instance(part),),
-                     "Return": ()}.get(name, (part.label,))
+                     "Return": (shown,)}.get(name, (part.label,))
             address = self.bit(operand) if name in ("PCoil", "NCoil") else None
             return Coil(address, mark=COIL_MARKS[name], texts=texts)
         if name in pins.BOXES or name == "Call":

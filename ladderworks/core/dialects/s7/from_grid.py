@@ -156,6 +156,8 @@ class _Reader:
             if name in ("PCoil", "NCoil"):
                 self.operand_wire(part, "operand", self.operand(coil, 0))
                 self.operand_wire(part, "bit", self.operand(coil, 1))
+            elif name == "Return" and first:  # its value (the block's ENO)
+                self.operand_wire(part, "operand", self.operand(coil, 0))
             elif name in ("PTCoil", "RTCoil"):
                 part.instance = operand_from_text(first) if first else None
                 if name == "PTCoil":

@@ -21,6 +21,7 @@ class BlockLowering(Protocol):
     layout: Layout
     scope: tuple[str, ...]
     depth: int
+    eno: Address | None
     networks: list[Network]
     diagnostics: list[Diagnostic]
 
@@ -44,5 +45,5 @@ class BlockLowering(Protocol):
     def keep(self, graph: PinGraph, part: Part) -> Address | None: ...
     def vtype(self, index: int, graph: PinGraph, part: Part, pins: tuple[str, ...]
               ) -> typed.ValueType: ...
-    def lower_callee(self, callee: Block, scope: tuple[str, ...]
+    def lower_callee(self, callee: Block, scope: tuple[str, ...], eno: Address | None = None
                      ) -> tuple[list[Network], list[Diagnostic]]: ...

@@ -71,6 +71,7 @@ class BlockLowering:
     counters: Counters = field(default_factory=Counters)
     scope: tuple[str, ...] = ()
     depth: int = 0
+    eno: Address | None = None  # a called block's ENO, which RET's value sets (calls.py)
     shown: set[str] = field(default_factory=set)  # parts shown, not simulated (shown_only)
     # what the drawing maps back (drawing.py): each S7 network's engine networks, and each
     # part's result and the instructions it was lowered to, by (network index, part uid)
@@ -78,11 +79,11 @@ class BlockLowering:
     emitted: dict[tuple[int, str], tuple[Expr | None, tuple[Instruction, ...]]] = field(
         default_factory=dict)
 
-    def lower_callee(self, callee: Block, scope: tuple[str, ...]
+    def lower_callee(self, callee: Block, scope: tuple[str, ...], eno: Address | None = None
                      ) -> tuple[list[Network], list[Diagnostic]]:
         """A called block's networks, lowered in `scope`, one call deeper (calls.py)."""
         child = BlockLowering(callee, self.layout, counters=self.counters, scope=scope,
-                              depth=self.depth + 1)
+                              depth=self.depth + 1, eno=eno)
         return child.run(), child.diagnostics
 
     def new_label(self) -> int:
@@ -120,7 +121,7 @@ class BlockLowering:
                 title = network.title or f"Network {index}"
                 self.networks[before].comments = [title, *network.comment.splitlines()]
             self.spans.append(range(before, len(self.networks)))
-        if any(ins.name == "S7.JMP" and ins.params == (LabelRef(self.end_label),)
+        if any(ins.name == "S7.RET" and ins.params == (LabelRef(self.end_label),)
                for net in self.networks for ins in net.instructions):
             self.networks.append(Network([Instruction("S7.LABEL", None,
                                                       (LabelRef(self.end_label),))]))
@@ -302,9 +303,11 @@ class BlockLowering:
                 target = self.labels.get(part.label.lower(), 0)
                 if not target:
                     raise self.fail(index, part, "s7-label-unknown", label=part.label)
-            tail = [Instruction("S7.NOT", line=line)] if name == "JumpN" else []
-            tail.append(Instruction("S7.JMP", None, (LabelRef(target),), line=line))
-            return self.statement(part, [power], tail, None)
+            row = {"Jump": "S7.JMP", "JumpN": "S7.JMPN", "Return": "S7.RET"}[name]
+            if name == "Return":
+                calls.return_value(self, index, graph, part, power)
+            return self.statement(part, [power], [Instruction(row, None, (LabelRef(target),),
+                                                              line=line)], None)
         if name in ("JumpList", "Switch"):
             boxes.jump_table(self, index, graph, part, power)
             return None

@@ -28,7 +28,8 @@ _BOX_ROWS = {"S7.TP": "TP", "S7.TON": "TON", "S7.TOF": "TOF", "S7.TONR": "TONR",
              "S7.MUL": "Mul", "S7.DIV": "Div", "S7.INC": "Inc", "S7.DEC": "Dec",
              "S7.CONVERT": "Convert", "S7.SR": "Sr", "S7.RS": "Rs", "S7.P_TRIG": "PTrig",
              "S7.N_TRIG": "NTrig"}
-_COIL_ROWS = {"S7.P_COIL": "P", "S7.N_COIL": "N", "S7.PT": "PT", "S7.RT": "RT", "S7.JMP": "JMP"}
+_COIL_ROWS = {"S7.P_COIL": "P", "S7.N_COIL": "N", "S7.PT": "PT", "S7.RT": "RT", "S7.JMP": "JMP",
+              "S7.JMPN": "JMPN", "S7.RET": "RET"}
 
 
 def _box(part: str) -> FunctionBox:
@@ -78,6 +79,8 @@ def operand_names(element: Element) -> list[str]:
         return ["instance", "PT"]
     if isinstance(element, Coil) and element.mark in ("JMP", "JMPN"):
         return ["label"]
+    if isinstance(element, Coil) and element.mark == "RET":
+        return ["value"]  # TIA's Return_Value: TRUE, FALSE or a Bool, the block's ENO
     return ["operand", "memory"][:len(element.texts) or 1] if isinstance(
         element, Contact | Coil) else []
 

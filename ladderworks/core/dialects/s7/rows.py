@@ -2,8 +2,10 @@
 
 Names `S7.<name>`, SUB numbers 30000-31999, basic opcodes 0x60-0x6F. A typed box has a NUMBER
 parameter `type` (core/plc/typed.py's ValueType) and VALUE operands (a constant or an address).
-An instance (IEC_TIMER, IEC_COUNTER) is an ADDRESS of its bytes (layout.py). A comparison
-and the P/N contacts leave their result in ST0 (`w1`): the drawing's contacts of those rows.
+JMPN is a LABEL_JUMP taken when its input is 0 (`negated`); RET a LABEL_JUMP to the label
+after the block's last network (lowering.py). An instance (IEC_TIMER, IEC_COUNTER) is an
+ADDRESS of its bytes (layout.py). A comparison and the P/N contacts leave their result in
+ST0 (`w1`): the drawing's contacts of those rows.
 """
 
 from __future__ import annotations
@@ -146,6 +148,9 @@ ROWS: tuple[InstructionSpec, ...] = (
          params=(_type(), Param("to", ParamKind.NUMBER, 0, max(typed.ValueType)), _value("IN"),
                  _out("OUT"))),
     _row("JMP", 60, "Jump if 1 (JMP)", "ATLA (JMP)", params=_LABEL, flow=Flow.LABEL_JUMP),
+    _row("JMPN", 62, "Jump if 0 (JMPN)", "0 İSE ATLA (JMPN)", params=_LABEL,
+         flow=Flow.LABEL_JUMP, negated=True),
+    _row("RET", 63, "Return (RET)", "GERİ DÖN (RET)", params=_LABEL, flow=Flow.LABEL_JUMP),
     _row("LABEL", 61, "Jump label (LABEL)", "ETİKET", inputs=(), params=_LABEL,
          flow=Flow.LABEL),
 )

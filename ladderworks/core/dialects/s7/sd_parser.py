@@ -314,6 +314,11 @@ class _Parser:
                 self.next()
                 path.append(self.next())
             part = self.make_part(network, path, start)
+            spelled = path[0].text.upper() if len(path) == 1 else ""
+            if spelled in ("RETURNTRUE", "RETURNFALSE"):  # RET's value in its name
+                value = Operand(OperandKind.CONSTANT, (), spelled[6:], "Bool")
+                network.wires.append(Wire(End(operand=value), [End(part=part.uid,
+                                                                   pin="operand")], start.line))
         part.template.update(pending)
         network.parts.append(part)
         self.expect_op("(", inside)

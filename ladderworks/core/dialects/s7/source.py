@@ -144,6 +144,10 @@ class S7Model:
         spans = self.lowered.spans
         return spans[index] if index < len(spans) else range(0)
 
+    def titles(self) -> list[str]:
+        """The title of each S7 network of the entry block ("" for none)."""
+        return [network.title for network in self.entry.networks]
+
     def spans(self) -> list[range]:
         """The engine networks of each drawn network."""
         return [self.span(i) for i in range(len(self.entry.networks))]

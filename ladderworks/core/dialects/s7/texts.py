@@ -9,12 +9,12 @@ from __future__ import annotations
 
 import re
 
-_ENTRY_RE = re.compile(r"^(\s*)-\s+id:\s*(.*?)\s*$")
-_ITEM_RE = re.compile(r"^(\s*)([A-Za-z]{2,3}(?:-[A-Za-z0-9]+)*):\s?(.*)$")
+ENTRY_RE = re.compile(r"^(\s*)-\s+id:\s*(.*?)\s*$")
+ITEM_RE = re.compile(r"^(\s*)([A-Za-z]{2,3}(?:-[A-Za-z0-9]+)*):\s?(.*)$")
 PREFERRED = ("en-US", "en-GB", "tr-TR", "de-DE")
 
 
-def _scalar(text: str) -> str:
+def scalar(text: str) -> str:
     text = text.strip()
     if len(text) >= 2 and text[0] == text[-1] == "'":
         return text[1:-1].replace("''", "'")
@@ -33,11 +33,11 @@ def read_texts(text: str) -> dict[str, dict[str, str]]:
     while index < len(lines):
         line = lines[index]
         index += 1
-        entry = _ENTRY_RE.match(line)
+        entry = ENTRY_RE.match(line)
         if entry is not None:
-            current = found.setdefault(_scalar(entry.group(2)), {})
+            current = found.setdefault(scalar(entry.group(2)), {})
             continue
-        item = _ITEM_RE.match(line)
+        item = ITEM_RE.match(line)
         if item is None or current is None:
             continue
         indent, culture, value = len(item.group(1)), item.group(2), item.group(3)
@@ -50,7 +50,7 @@ def read_texts(text: str) -> dict[str, dict[str, str]]:
             joiner = " " if value.strip().startswith(">") else "\n"
             current[culture] = joiner.join(block).strip()
         else:
-            current[culture] = _scalar(value)
+            current[culture] = scalar(value)
     return found
 
 

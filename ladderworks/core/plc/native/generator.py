@@ -377,6 +377,8 @@ class _Generator:
         ended: list[Range] = []
         if flow in _FLOW_ACT and self.monitored:
             self.flow(index, act)
+        if spec.negated and flow in _FLOW_ACT:  # a flow taken when its input is 0 (S7's JMPN)
+            act = f.value(f"xor i8 {act}, 1")
         target = number_of(op.params[0]) if op.params else None
         result = "0"
         if flow is Flow.JUMP:
