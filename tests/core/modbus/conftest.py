@@ -18,7 +18,7 @@ from ladderworks.paths import EXAMPLES
 
 SPINDLE = EXAMPLES / "spindle_override.LAD"  # X2.1, X2.3, X2.5 -> R102 -> G30 (%)
 TIMEOUT = 3.0  # seconds a client waits for an answer
-STOP = 30  # seconds a served process may take to stop on SIGTERM on a loaded machine (not a speed claim)
+STOP = 30  # seconds a served process may take to stop on SIGTERM (a loaded machine)
 
 
 def spindle_binary() -> bytes:
