@@ -26,7 +26,7 @@ from ladderworks.core.plc.functions import (
     timers,
     transfer,
 )
-from ladderworks.core.plc.native import layout
+from ladderworks.core.plc.native import bcd, builtins, layout, words
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import (
     AT,
@@ -78,6 +78,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "tmrc"
     if impl is timers.tmrbf:
         return "tmrbf"
+    if bcd.is_bcd_arithmetic(spec, impl):
+        return "bcd"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
         return "arithmetic"
     return None
@@ -324,6 +326,9 @@ def _arithmetic(operation: Operation) -> Callable[[Block, Sequence[object], list
     return emit
 
 
+# the stateless rows of bcd.py and words.py join builtins' (they use its helpers)
+builtins.EMITTERS.update(bcd.EMITTERS)
+builtins.EMITTERS.update(words.EMITTERS)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
@@ -351,6 +356,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
+        if found == "bcd":
+            return bcd.arithmetic(block, spec.operation, params, inputs)
         if found == "arithmetic":
             return _arithmetic(spec.operation)(block, params, inputs)
     except (ValueError, TypeError):
