@@ -11,7 +11,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, Operation
 from ladderworks.core.plc.bcd import bcd_limit
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, compare, load_all
-from ladderworks.core.plc.native.builtins import _fits, _load, _store
+from ladderworks.core.plc.native.builtins import Emitter, _fits, _load, _store
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import Block, _held
 
@@ -116,7 +116,7 @@ def arithmetic(b: Block, operation: Operation, params: Sequence[object],
     return _held(b, inputs[1], inputs[2], compute)
 
 
-def _compare(predicate: str):  # type: ignore[no-untyped-def]
+def _compare(predicate: str) -> Emitter:
     """COMP (input <= data) / COIN (input = data): W1 while ACT = 1 and both valid BCD."""
 
     def emit(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
@@ -135,4 +135,5 @@ def _compare(predicate: str):  # type: ignore[no-untyped-def]
     return emit
 
 
-EMITTERS = {compare.comp: _compare("ule"), compare.coin: _compare("eq")}
+EMITTERS: dict[FunctionImpl, Emitter] = {compare.comp: _compare("ule"),
+                                        compare.coin: _compare("eq")}

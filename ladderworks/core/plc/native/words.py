@@ -11,14 +11,14 @@ from collections.abc import Callable, Sequence
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta.table import ROWS
 from ladderworks.core.instructions import Operation
-from ladderworks.core.plc.functions import REGISTRY, load_all
+from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.dvp_data import (
+    _OPERATIONS,
     M1020,
     M1021,
     M1022,
     M1067,
     M1068,
-    _OPERATIONS,
     bit_after,
     width_of,
 )
@@ -193,15 +193,15 @@ def _row(prepare: Callable[[Sequence[object]], Callable[[FunctionText], None]]) 
     return emit
 
 
-def _emitters() -> dict[object, Emitter]:
+def _emitters() -> dict[FunctionImpl, Emitter]:
     """The rows whose implementation is dvp_data's, not a pulse form, by that implementation."""
     load_all()
-    found: dict[object, Emitter] = {}
+    found: dict[FunctionImpl, Emitter] = {}
     for row in ROWS:
         impl = REGISTRY.get(row.name)
         action = _OPERATIONS.get(row.operation)
         cells = [cell.cell_contents for cell in getattr(impl, "__closure__", None) or ()]
-        if row.operation in _PREPARE and not row.pulse and action in cells:
+        if impl is not None and row.operation in _PREPARE and not row.pulse and action in cells:
             found[impl] = _row(_PREPARE[row.operation])
     return found
 
