@@ -65,6 +65,14 @@ PMC = {
             "RD X0.2\nRD.STK X0.3\nCOIN 0 99 D4\nWRT Y0.1\n"
             "RD X0.4\nRD.STK X0.5\nCOIN 0 120 D6\nWRT Y0.2\n"
             "RD X0.4\nRD.STK X0.0\nCOIN 1 D8 D8\nWRT Y0.3\n",
+    "NUME": "RD X0.0\nRD.STK X0.1\nNUME 1234 D0\nRD X0.2\nRD.STK X0.3\nNUME 99 D2\n"
+            "RD X0.4\nRD.STK X0.5\nNUME 100 D4\nRD X0.6\nRD.STK X0.7\nNUME 9999 D6\n",
+    "DEC": "RD X0.0\nDEC D0 1211\nWRT Y0.0\nRD X0.1\nDEC D1 9901\nWRT Y0.1\n"
+           "RD X0.2\nDEC D2 9010\nWRT Y0.2\nRD X0.3\nDEC D3 911\nWRT Y0.3\n"
+           "RD X0.4\nDEC D4 1205\nWRT Y0.4\nRD X0.5\nDEC D5 0011\nWRT Y0.5\n",
+    "SFT": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nSFT D0\nWRT Y0.0\n"
+           "RD X0.4\nRD.STK X0.5\nRD.STK X0.6\nRD.STK X0.7\nSFT D2\nWRT Y0.1\n"
+           "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nSFT D0\nWRT Y0.2\n",
 }
 
 

@@ -1,7 +1,8 @@
 """The PMC's BCD rows as native code: ADD/SUB/MUL/DIV (an error output held as `held_output`
-holds it: stateful.py gives the block) and COMP/COIN; BYT (2 or 4 digits) is a run-time input,
-so both widths are read and the one BYT names is used, exactly as core/plc/functions'
-arithmetic.py and compare.py do (an invalid digit or a constant past the width: an error)."""
+holds it: stateful.py gives the block), COMP/COIN, NUME and DEC; BYT (2 or 4 digits) is a
+run-time input, so both widths are read and the one BYT names is used, exactly as
+core/plc/functions' arithmetic.py, compare.py and decode.py do (an invalid digit or a
+constant past the width: an error)."""
 
 from __future__ import annotations
 
@@ -9,9 +10,18 @@ from collections.abc import Sequence
 
 from ladderworks.core.address import Address
 from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, Operation
-from ladderworks.core.plc.bcd import bcd_limit
-from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, compare, load_all
-from ladderworks.core.plc.native.builtins import Emitter, _fits, _load, _store
+from ladderworks.core.plc.bcd import bcd_limit, int_to_bcd
+from ladderworks.core.plc.functions import (
+    REGISTRY,
+    FunctionImpl,
+    compare,
+    decode,
+    load_all,
+)
+from ladderworks.core.plc.functions import (
+    arithmetic as _arithmetic,
+)
+from ladderworks.core.plc.native.builtins import Emitter, _fits, _load, _signed, _store, _when
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import Block, _held
 
@@ -135,5 +145,49 @@ def _compare(predicate: str) -> Emitter:
     return emit
 
 
+def _nume(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """NUME: ACT = 1 writes the constant as 2 (BYT = 0) or 4 BCD digits; one that does not
+    fit: nothing."""
+    if len(inputs) != 2 or len(params) != 2:
+        return None
+    constant, target = params
+    if not (isinstance(constant, int) and isinstance(target, Address) and _fits(target, 2)):
+        return None
+
+    def body() -> None:
+        two, one, done = f.label(), f.label(), f.label()
+        f.add(f"br i1 {f.truth(inputs[0])}, label %{two}, label %{one}")
+        for label, width in ((two, 2), (one, 1)):
+            f.start(label)
+            raw = int_to_bcd(constant, 2 * width)
+            if raw is not None:
+                _store(f, target, width, str(_signed(raw, width)))
+            f.add(f"br label %{done}")
+        f.start(done)
+
+    _when(f, inputs[-1], body)
+    return "0"
+
+
+def _dec(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """DEC: W1 = ACT and the BCD byte matches the spec nnxx (`decode.decode_matches`, its
+    digits chosen now)."""
+    if len(inputs) != 1 or len(params) != 2:
+        return None
+    code, spec = params
+    if not (isinstance(code, Address) and _fits(code, 1) and isinstance(spec, int)):
+        return None
+    number, digits = divmod(spec, 100)
+    high, low = divmod(number, 10)
+    masks = {1: (0x0F, low), 10: (0xF0, high << 4), 11: (0xFF, (high << 4) | low)}
+    if digits not in masks or (high > 9 and digits != 1):
+        return "0"
+    mask, wanted = masks[digits]
+    raw = f.value(f"zext i8 {_load(f, code, 1)} to i32")
+    holds = f.value(f"icmp eq i32 {f.value(f'and i32 {raw}, {mask}')}, {wanted}")
+    return f.value(f"and i8 {inputs[0]}, {f.value(f'zext i1 {holds} to i8')}")
+
+
 EMITTERS: dict[FunctionImpl, Emitter] = {compare.comp: _compare("ule"),
-                                        compare.coin: _compare("eq")}
+                                        compare.coin: _compare("eq"),
+                                        _arithmetic.nume: _nume, decode.dec: _dec}

@@ -26,7 +26,10 @@ from ladderworks.core.plc.functions import (
     timers,
     transfer,
 )
-from ladderworks.core.plc.native import bcd, builtins, layout, words
+from ladderworks.core.plc.functions import (
+    shift as shifts,
+)
+from ladderworks.core.plc.native import bcd, builtins, layout, shift, words
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import (
     AT,
@@ -80,6 +83,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "tmrbf"
     if bcd.is_bcd_arithmetic(spec, impl):
         return "bcd"
+    if impl is shifts.sft:
+        return "sft"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
         return "arithmetic"
     return None
@@ -356,6 +361,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
+        if found == "sft":
+            return shift.sft(block, params, inputs)
         if found == "bcd":
             return bcd.arithmetic(block, spec.operation, params, inputs)
         if found == "arithmetic":
