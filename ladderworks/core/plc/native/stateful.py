@@ -85,6 +85,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "bcd"
     if impl is shifts.sft:
         return "sft"
+    if impl in words.PULSES:
+        return "pulse"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
         return "arithmetic"
     return None
@@ -361,6 +363,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
+        if found == "pulse":
+            return words.pulse(block, impl, params, inputs)
         if found == "sft":
             return shift.sft(block, params, inputs)
         if found == "bcd":

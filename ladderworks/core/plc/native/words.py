@@ -2,7 +2,8 @@
 core/plc/functions/dvp_data.py), each while its input is on, W1 = the input; widths and
 addresses known when the IR is made (a counter C200-C255 is 32-bit). Values are worked in i64
 (the constants taken are 32-bit: every sum and product fits), stored wrapped to the width as
-`Memory.write` does; the pulse forms keep a state and call back."""
+`Memory.write` does; a pulse form (MOVP ...) runs in the scan its input went on, the input
+of its last execution kept in its state block (the dict's "prev")."""
 
 from __future__ import annotations
 
@@ -24,6 +25,7 @@ from ladderworks.core.plc.functions.dvp_data import (
 )
 from ladderworks.core.plc.native.builtins import Emitter, _fits, _load, _store, _when
 from ladderworks.core.plc.native.ir_text import FunctionText
+from ladderworks.core.plc.native.state_block import HAS_PREV, PREV, Block
 
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
@@ -193,17 +195,45 @@ def _row(prepare: Callable[[Sequence[object]], Callable[[FunctionText], None]]) 
     return emit
 
 
-def _emitters() -> dict[FunctionImpl, Emitter]:
-    """The rows whose implementation is dvp_data's, not a pulse form, by that implementation."""
+def pulse(b: Block, impl: FunctionImpl, params: Sequence[object],
+          inputs: list[str]) -> str | None:
+    """A pulse form (`dvp_data.rising`): the input stored as "prev" in every execution, the
+    row's work done when it went on; W1 = the input."""
+    if not inputs:
+        return None
+    try:
+        body = PULSES[impl](params)
+    except (_Refused, ValueError, TypeError, KeyError):
+        return None
+    f = b.f
+    flags = b.flags()
+    act = f.truth(inputs[-1])
+    before = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {PREV}')}, 0")
+    kept = f.value(f"or i32 {f.value(f'and i32 {flags}, {~PREV}')}, {HAS_PREV}")
+    b.set_flags(flags, f.value(f"select i1 {act}, i32 {f.value(f'or i32 {kept}, {PREV}')}, "
+                               f"i32 {kept}"))
+    run = f.value(f"and i1 {act}, {f.value(f'xor i1 {before}, true')}")
+    _, after = f.branch_if(run)
+    body(f)
+    f.join(after)
+    return inputs[-1]
+
+
+def _rows(pulse: bool) -> dict[FunctionImpl, Callable[[Sequence[object]],
+                                                    Callable[[FunctionText], None]]]:
+    """The rows whose implementation is dvp_data's (pulse forms or not), by it."""
     load_all()
-    found: dict[FunctionImpl, Emitter] = {}
+    found: dict[FunctionImpl, Callable[[Sequence[object]], Callable[[FunctionText], None]]] = {}
     for row in ROWS:
         impl = REGISTRY.get(row.name)
         action = _OPERATIONS.get(row.operation)
         cells = [cell.cell_contents for cell in getattr(impl, "__closure__", None) or ()]
-        if impl is not None and row.operation in _PREPARE and not row.pulse and action in cells:
-            found[impl] = _row(_PREPARE[row.operation])
+        if impl is not None and row.operation in _PREPARE and row.pulse == pulse \
+                and action in cells:
+            found[impl] = _PREPARE[row.operation]
     return found
 
 
-EMITTERS = _emitters()
+EMITTERS: dict[FunctionImpl, Emitter] = {impl: _row(prepare)
+                                        for impl, prepare in _rows(False).items()}
+PULSES = _rows(True)  # the pulse forms: stateful.py gives each a block
