@@ -191,3 +191,47 @@ def _dec(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | 
 EMITTERS: dict[FunctionImpl, Emitter] = {compare.comp: _compare("ule"),
                                         compare.coin: _compare("eq"),
                                         _arithmetic.nume: _nume, decode.dec: _dec}
+
+
+def cod(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
+    """COD: output = table[index] in BCD (2 or 4 digits by BYT); W1 = 1 when the index is not
+    BCD or past the table, or the entry does not fit (nothing written)."""
+    if len(inputs) != 3 or len(params) < 3:
+        return None
+    size, index, out = params[:3]
+    table = params[3:]
+    if not (isinstance(size, int) and isinstance(index, Address) and _fits(index, 1)
+            and isinstance(out, Address) and _fits(out, 2)
+            and all(isinstance(entry, int) for entry in table)):
+        return None
+    rows = [entry for entry in table[:max(0, min(size, len(table), 100))]
+            if isinstance(entry, int)]
+    f = b.f
+
+    def compute() -> str:
+        wide = f.truth(inputs[0])
+        row, valid = _read(f, index, 1)
+        bad, done = f.label(), f.label()
+        cases = [f.label() for _ in rows]
+        chosen = f.value(f"select i1 {valid}, i64 {row}, i64 -1")
+        f.add(f"switch i64 {chosen}, label %{bad} [" +
+              " ".join(f"i64 {k}, label %{label}" for k, label in enumerate(cases)) + "]")
+        incoming = [("true", bad)]
+        for entry, label in zip(rows, cases, strict=True):
+            f.start(label)
+            two, one = f.label(), f.label()
+            f.add(f"br i1 {wide}, label %{two}, label %{one}")
+            for start, width in ((two, 2), (one, 1)):
+                f.start(start)
+                raw = int_to_bcd(entry, 2 * width)
+                if raw is not None:
+                    _store(f, out, width, str(_signed(raw, width)))
+                incoming.append(("false" if raw is not None else "true", start))
+                f.add(f"br label %{done}")
+        f.start(bad)
+        f.add(f"br label %{done}")
+        f.start(done)
+        return f.value("phi i1 " + ", ".join(f"[{value}, %{label}]"
+                                              for value, label in incoming))
+
+    return _held(b, inputs[1], inputs[2], compute)

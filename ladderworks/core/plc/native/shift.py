@@ -1,6 +1,7 @@
-"""SFT as native code (core/plc/functions/shift.py): one shift of 16 bits per execution with
-ACT = 1, left or right (DIR), CONT keeping every 1 in place; W1 the bit shifted out, held in
-the call site's state as `held_output` holds an error output (RST = 1: W1 = 0, no shift)."""
+"""SFT and PARI as native code (core/plc/functions/shift.py, parity.py). SFT: one shift of
+16 bits per execution with ACT = 1, left or right (DIR), CONT keeping every 1 in place; W1
+the bit shifted out, held in the call site's state as `held_output` holds an error output
+(RST = 1: W1 = 0, no shift); PARI's W1 (the byte's parity against O.E) held the same way."""
 
 from __future__ import annotations
 
@@ -33,3 +34,22 @@ def sft(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
         return f.value(f"icmp ne i16 {out}, 0")
 
     return _held(b, inputs[2], inputs[3], compute)
+
+
+def pari(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
+    """PARI: W1 = (the byte's count of 1-bits is odd) != O.E, held; RST = 1: W1 = 0."""
+    if len(inputs) != 3 or len(params) != 1:
+        return None
+    (address,) = params
+    if not (isinstance(address, Address) and _fits(address, 1)):
+        return None
+    f = b.f
+
+    def compute() -> str:
+        x = _load(f, address, 1)
+        for step in (4, 2, 1):
+            x = f.value(f"xor i8 {x}, {f.value(f'lshr i8 {x}, {step}')}")
+        odd = f.value(f"and i8 {x}, 1")
+        return f.value(f"icmp ne i8 {odd}, {inputs[0]}")
+
+    return _held(b, inputs[1], inputs[2], compute)

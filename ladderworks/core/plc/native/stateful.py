@@ -22,6 +22,7 @@ from ladderworks.core.plc.functions import (
     convert,
     counters,
     load_all,
+    parity,
     signed_range,
     timers,
     transfer,
@@ -85,6 +86,10 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "bcd"
     if impl is shifts.sft:
         return "sft"
+    if impl is parity.pari:
+        return "pari"
+    if impl is convert.cod:
+        return "cod"
     if impl in words.PULSES:
         return "pulse"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
@@ -365,6 +370,10 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _codb(block, params, inputs)
         if found == "pulse":
             return words.pulse(block, impl, params, inputs)
+        if found == "pari":
+            return shift.pari(block, params, inputs)
+        if found == "cod":
+            return bcd.cod(block, params, inputs)
         if found == "sft":
             return shift.sft(block, params, inputs)
         if found == "bcd":
