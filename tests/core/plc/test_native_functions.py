@@ -74,6 +74,14 @@ PMC = {
            "RD X0.3\nRD.STK X0.4\nRD.STK X0.5\nCOD 3 D1 D4 1 2 3\nWRT Y0.1\n",
     "PARI": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nPARI D0\nWRT Y0.0\n"
             "RD X0.3\nRD.STK X0.4\nRD.STK X0.5\nPARI D1\nWRT Y0.1\n",
+    "ROT": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nRD.STK X0.4\nRD.STK X0.5\n"
+           "ROT 99 D0 D1 D2\nWRT Y0.0\n"
+           "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nRD.STK X1.4\nRD.STK X1.5\n"
+           "ROT 12 D4 D6 D8\nWRT Y0.1\n",
+    "ROTB": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nRD.STK X0.4\n"
+            "ROTB 1 D0 D1 D2 D3\nWRT Y0.0\n"
+            "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nRD.STK X1.4\n"
+            "ROTB 2 D4 D6 D8 D10\nWRT Y0.1\n",
     "SFT": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nSFT D0\nWRT Y0.0\n"
            "RD X0.4\nRD.STK X0.5\nRD.STK X0.6\nRD.STK X0.7\nSFT D2\nWRT Y0.1\n"
            "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nSFT D0\nWRT Y0.2\n",

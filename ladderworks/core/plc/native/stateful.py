@@ -28,9 +28,12 @@ from ladderworks.core.plc.functions import (
     transfer,
 )
 from ladderworks.core.plc.functions import (
+    rotation as rotations,
+)
+from ladderworks.core.plc.functions import (
     shift as shifts,
 )
-from ladderworks.core.plc.native import bcd, builtins, layout, shift, words
+from ladderworks.core.plc.native import bcd, builtins, layout, rotation, shift, words
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import (
     AT,
@@ -86,6 +89,10 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "bcd"
     if impl is shifts.sft:
         return "sft"
+    if impl is rotations.rot:
+        return "rot"
+    if impl is rotations.rotb:
+        return "rotb"
     if impl is parity.pari:
         return "pari"
     if impl is convert.cod:
@@ -374,6 +381,10 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return shift.pari(block, params, inputs)
         if found == "cod":
             return bcd.cod(block, params, inputs)
+        if found == "rot":
+            return rotation.rot(block, params, inputs)
+        if found == "rotb":
+            return rotation.rotb(block, params, inputs)
         if found == "sft":
             return shift.sft(block, params, inputs)
         if found == "bcd":
