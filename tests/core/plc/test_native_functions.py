@@ -77,7 +77,9 @@ PMC = {
     "ROT": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nRD.STK X0.4\nRD.STK X0.5\n"
            "ROT 99 D0 D1 D2\nWRT Y0.0\n"
            "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nRD.STK X1.4\nRD.STK X1.5\n"
-           "ROT 12 D4 D6 D8\nWRT Y0.1\n",
+           "ROT 12 D4 D6 D8\nWRT Y0.1\n"
+           "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nRD.STK X1.4\nRD.STK X1.5\n"
+           "ROT 2 D10 D11 D9\nWRT Y0.2\n",
     "ROTB": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nRD.STK X0.4\n"
             "ROTB 1 D0 D1 D2 D3\nWRT Y0.0\n"
             "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nRD.STK X1.4\n"
@@ -161,3 +163,27 @@ def test_a_delta_row_runs_natively_as_in_python(row: str, monitored: bool, scans
                                                 ) -> None:
     tmp = tmp_path_factory.mktemp("delta")
     _run(_delta({**DELTA, **DELTA_PULSE}[row], tmp), monitored, scans, counters=True)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+def test_rot_and_rotb_give_every_small_rotation_as_in_python(monitored: bool) -> None:
+    """Every current and target of 0..4 (4 positions: 4 is outside), every RN0, DIR, POS and
+    INC (ties between the two ways included), ROTB with 0, 1, 4 and -1 positions."""
+    binary = _pmc("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nRD.STK X0.4\nRD.STK X0.5\n"
+                  "ROT 4 D0 D1 D2\nWRT Y0.0\n"
+                  "RD X0.0\nRD.STK X0.2\nRD.STK X0.3\nRD.STK X0.4\nRD.STK X0.5\n"
+                  "ROTB 1 D4 D5 D6 D7\nWRT Y0.1\n")
+    python, native = _engines(binary, monitored)
+    for positions in (4, 1, 0, 255):
+        for current in range(5):
+            for target in range(5):
+                for controls in range(16):
+                    rn0, direction, pos, inc = (controls >> k & 1 for k in range(4))
+                    x = rn0 | direction << 2 | pos << 3 | inc << 4 | 1 << 5
+                    for engine in (python, native):
+                        engine.memory.areas[Area.D][:8] = bytes(
+                            (current, target, 0, 0, positions, current, target, 0))
+                        engine.memory.areas[Area.X][0] = x | (controls & 2)
+                        engine.scan()
+                    assert native.memory.areas == python.memory.areas
+                    assert native.call_states() == python.call_states()
