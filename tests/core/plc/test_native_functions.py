@@ -16,7 +16,9 @@ from hypothesis import strategies as st
 from ladderworks.core.address import Area
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.compiler.binary import BinaryProgram, decode
+from ladderworks.core.dialects.fatek import DEVICES as FATEK_DEVICES
 from ladderworks.core.il import parse_file
+from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.native import disk_cache
 from tests.core.plc.test_skipping import binary_of
@@ -121,6 +123,27 @@ DELTA_PULSE = {f"{name}P": text.replace(f"\n{name} ", f"\n{name}P ")
                for name, text in DELTA.items()}
 
 
+def _fatek_arith(number: int, symbol: str) -> str:
+    return "".join(f"ORG X{k}\nFUN {number}{form} ({symbol})\n Sa: {sa}\n Sb: {sb}\n D : {d}\n"
+                   f"FO 0\nOUT Y{k}\n"
+                   for k, (form, sa, sb, d) in enumerate((
+                       ("", "R0", "R1", "R20"), ("P", "R2", "32767", "R22"),
+                       ("D", "R4", "R6", "R24"), ("DP", "R8", "-1", "R28"),
+                       ("", "R10", "0", "R32"), ("", "-32768", "R11", "R34"))))
+
+
+FATEK = {
+    "MOV": "ORG X0\nFUN 8 MOV\n S : R0\n D : R20\nORG X1\nFUN 8P MOV\n S : -5\n D : R21\n"
+           "ORG X2\nFUN 8D MOV\n S : R2\n D : R22\nORG X3\nFUN 8DP MOV\n S : 100000\n D : R24\n",
+    "ADD": _fatek_arith(11, "+"), "SUB": _fatek_arith(12, "-"), "MUL": _fatek_arith(13, "*"),
+    "DIV": _fatek_arith(14, "/"),
+    "INC": "".join(f"ORG X{k}\nFUN 15{form} (+1)\n D : R{2 * k}\nFO 0\nOUT Y{k}\n"
+                   for k, form in enumerate(("", "P", "D", "DP"))),
+    "DEC": "".join(f"ORG X{k}\nFUN 16{form} (-1)\n D : R{2 * k}\nFO 0\nOUT Y{k}\n"
+                   for k, form in enumerate(("", "P", "D", "DP"))),
+}
+
+
 def _engines(binary: BinaryProgram, monitored: bool) -> tuple[ScanEngine, ScanEngine]:
     python = ScanEngine(binary, monitored=monitored)
     native = ScanEngine(binary, monitored=monitored, backend="native")
@@ -130,11 +153,13 @@ def _engines(binary: BinaryProgram, monitored: bool) -> tuple[ScanEngine, ScanEn
     return python, native
 
 
-def _run(binary: BinaryProgram, monitored: bool, scans: list, counters: bool) -> None:
+def _run(binary: BinaryProgram, monitored: bool, scans: list, counters: bool,
+         data_at: tuple[Area, int] = (Area.D, 0)) -> None:
     python, native = _engines(binary, monitored)
+    area, first = data_at
     for data, low, high in scans:
         for engine in (python, native):
-            engine.memory.areas[Area.D][:DATA] = bytes(data)
+            engine.memory.areas[area][first:first + DATA] = bytes(data)
             if counters:  # C200 and C201 (4 bytes each) from the data too
                 engine.memory.areas[Area.C][800:808] = bytes(data[:8])
             engine.memory.areas[Area.X][0] = low
@@ -163,6 +188,19 @@ def test_a_delta_row_runs_natively_as_in_python(row: str, monitored: bool, scans
                                                 ) -> None:
     tmp = tmp_path_factory.mktemp("delta")
     _run(_delta({**DELTA, **DELTA_PULSE}[row], tmp), monitored, scans, counters=True)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@pytest.mark.parametrize("row", sorted(FATEK))
+@settings(max_examples=examples(25), deadline=None)
+@given(scans=_scans)
+def test_a_fatek_row_runs_natively_as_in_python(row: str, monitored: bool, scans: list) -> None:
+    result = parse_bytes(FATEK[row].encode("ascii"), "fatek")
+    assert not [d for d in result.diagnostics if d.is_error]
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None, [d.message() for d in compiled.diagnostics][:3]
+    r0, _ = FATEK_DEVICES.word("R0")
+    _run(decode(compiled.binary), monitored, scans, counters=False, data_at=(r0.area, r0.byte))
 
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])

@@ -33,7 +33,7 @@ from ladderworks.core.plc.functions import (
 from ladderworks.core.plc.functions import (
     shift as shifts,
 )
-from ladderworks.core.plc.native import bcd, builtins, layout, rotation, shift, words
+from ladderworks.core.plc.native import bcd, builtins, fatek, layout, rotation, shift, words
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import (
     AT,
@@ -99,6 +99,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "cod"
     if impl in words.PULSES:
         return "pulse"
+    if impl in fatek.BOXES:
+        return "fatek"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
         return "arithmetic"
     return None
@@ -375,6 +377,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
+        if found == "fatek":
+            return fatek.emit(block, impl, params, inputs)
         if found == "pulse":
             return words.pulse(block, impl, params, inputs)
         if found == "pari":
