@@ -118,6 +118,26 @@ DELTA = {
                   "ZCP K5 K-5 D6 M20", "ZCP D7 D7 D7 M30"),
 }
 
+# the 32-bit D forms: device pairs, C200 (32-bit) and C0 (16-bit) counters, 32-bit limits
+DELTA.update({
+    "DMOV": _gated("DMOV D0 D20", "DMOV K-7 C200", "DMOV D2 C201", "DMOV C200 D22",
+                   "DMOV K2147483647 D24", "DMOV D4 C0"),
+    "DADD": _gated("DADD D0 D2 D20", "DADD D4 K2147483647 D22", "DADD C200 D6 D24",
+                   "DADD K2147483647 K1 D26", "DADD K-2147483648 K-1 D28", "DADD K-1 K1 D30",
+                   "DADD D8 D8 C0"),
+    "DSUB": _gated("DSUB D0 D2 D20", "DSUB K-2147483648 D4 D22", "DSUB C200 D6 D24",
+                   "DSUB K-2147483648 K1 D26", "DSUB K5 K5 D28", "DSUB D8 D8 C0"),
+    "DMUL": _gated("DMUL D0 D2 D20", "DMUL C200 D4 D24", "DMUL K-2147483648 K-2147483648 D28",
+                   "DMUL D6 C0 D32"),
+    "DDIV": _gated("DDIV D0 D2 D20", "DDIV C200 D4 D24", "DDIV D6 K0 D28",
+                   "DDIV K-2147483648 K-1 D32", "DDIV D8 D8 D36", "DDIV K-7 C0 D40"),
+    "DINC": _gated("DINC D0", "DINC C200", "DINC D2", "DINC C0"),
+    "DDEC": _gated("DDEC D0", "DDEC C200", "DDEC D2", "DDEC C0"),
+    "DCMP": _gated("DCMP D0 D2 M0", "DCMP K5 C200 M10", "DCMP D4 D4 Y4", "DCMP C0 K0 M7"),
+    "DZCP": _gated("DZCP D0 D2 D4 M0", "DZCP K-5 K5 C200 M10", "DZCP D6 D8 D10 Y4",
+                   "DZCP K5 K-5 C0 M20"),
+})
+
 # the pulse forms (MOVP ...): run in the scan their input went on
 DELTA_PULSE = {f"{name}P": text.replace(f"\n{name} ", f"\n{name}P ")
                for name, text in DELTA.items()}
@@ -160,8 +180,9 @@ def _run(binary: BinaryProgram, monitored: bool, scans: list, counters: bool,
     for data, low, high in scans:
         for engine in (python, native):
             engine.memory.areas[area][first:first + DATA] = bytes(data)
-            if counters:  # C200 and C201 (4 bytes each) from the data too
+            if counters:  # C200 and C201 (4 bytes each) and C0 from the data too
                 engine.memory.areas[Area.C][800:808] = bytes(data[:8])
+                engine.memory.areas[Area.C][0:2] = bytes(data[8:10])
             engine.memory.areas[Area.X][0] = low
             engine.memory.areas[Area.X][1] = high
             engine.scan()

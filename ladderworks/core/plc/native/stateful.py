@@ -33,7 +33,16 @@ from ladderworks.core.plc.functions import (
 from ladderworks.core.plc.functions import (
     shift as shifts,
 )
-from ladderworks.core.plc.native import bcd, builtins, fatek, layout, rotation, shift, words
+from ladderworks.core.plc.native import (
+    bcd,
+    builtins,
+    fatek,
+    layout,
+    rotation,
+    shift,
+    words,
+    words32,
+)
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import (
     AT,
@@ -350,6 +359,8 @@ def _arithmetic(operation: Operation) -> Callable[[Block, Sequence[object], list
 # the stateless rows of bcd.py and words.py join builtins' (they use its helpers)
 builtins.EMITTERS.update(bcd.EMITTERS)
 builtins.EMITTERS.update(words.EMITTERS)
+builtins.EMITTERS.update(words32.EMITTERS)
+words.PULSES.update(words32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 

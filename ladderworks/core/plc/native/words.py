@@ -28,6 +28,7 @@ from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import HAS_PREV, PREV, Block
 
 _I32 = (-(1 << 31), (1 << 31) - 1)
+Prepare = Callable[[Sequence[object]], Callable[[FunctionText], None]]
 
 
 class _Refused(Exception):
