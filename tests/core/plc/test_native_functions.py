@@ -139,6 +139,21 @@ DELTA.update({
                    "DZCP K5 K-5 C0 M20"),
 })
 
+_TESTS = ("=", ">", "<", "<>", "<=", ">=")
+# the comparison contacts (LD= ... OR>=, DLD= ...) and the edge contacts (LDP ... ORF)
+CONTACTS = {
+    "LD": "".join(f"LD{t} D{k} D{k + 1}\nOUT Y{k}\nLD{t} C200 K{k - 3}\nOUT M{k}\n"
+                  for k, t in enumerate(_TESTS)),
+    "AND": "".join(f"LD X{k}\nAND{t} D{k} K0\nOUT Y{k}\n" for k, t in enumerate(_TESTS)),
+    "OR": "".join(f"LD X{k}\nOR{t} D{k} D{k + 1}\nOUT Y{k}\n" for k, t in enumerate(_TESTS)),
+    "STK": "".join(f"LD X{k}\nLD{t} D{k} D7\nORB\nOUT Y{k}\n" for k, t in enumerate(_TESTS)),
+    "DLD": "".join(f"LD X{k}\nDAND{t} D0 D2\nDOR{t} C200 K-1\nOUT Y{k}\n"
+                   f"DLD{t} D{2 * k} K2147483647\nOUT M{k}\n" for k, t in enumerate(_TESTS)),
+    "EDGE": "LDP X0\nOUT Y0\nLDF X1\nOUT Y1\nLD X2\nANDP X3\nOUT Y2\nLD X4\nANDF X5\n"
+            "OUT Y3\nLD X6\nORP X7\nOUT Y4\nLD X10\nORF X11\nOUT Y5\nLD X12\nLDP X13\n"
+            "ANB\nOUT Y6\n",
+}
+
 # the pulse forms (MOVP ...): run in the scan their input went on
 DELTA_PULSE = {f"{name}P": text.replace(f"\n{name} ", f"\n{name}P ")
                for name, text in DELTA.items()}
@@ -210,6 +225,17 @@ def test_a_delta_row_runs_natively_as_in_python(row: str, monitored: bool, scans
                                                 ) -> None:
     tmp = tmp_path_factory.mktemp("delta")
     _run(_delta({**DELTA, **DELTA_PULSE}[row], tmp), monitored, scans, counters=True)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@pytest.mark.parametrize("rows", sorted(CONTACTS))
+@settings(max_examples=examples(25), deadline=None)
+@given(scans=_scans)
+def test_delta_contacts_run_natively_as_in_python(rows: str, monitored: bool, scans: list,
+                                                  tmp_path_factory: pytest.TempPathFactory
+                                                  ) -> None:
+    tmp = tmp_path_factory.mktemp("contacts")
+    _run(_delta(CONTACTS[rows], tmp), monitored, scans, counters=True)
 
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])

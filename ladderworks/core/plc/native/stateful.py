@@ -36,6 +36,7 @@ from ladderworks.core.plc.functions import (
 from ladderworks.core.plc.native import (
     bcd,
     builtins,
+    contacts,
     fatek,
     layout,
     rotation,
@@ -110,6 +111,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "pulse"
     if impl in fatek.BOXES:
         return "fatek"
+    if impl in contacts.EDGES:
+        return "edge contact"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
         return "arithmetic"
     return None
@@ -360,6 +363,7 @@ def _arithmetic(operation: Operation) -> Callable[[Block, Sequence[object], list
 builtins.EMITTERS.update(bcd.EMITTERS)
 builtins.EMITTERS.update(words.EMITTERS)
 builtins.EMITTERS.update(words32.EMITTERS)
+builtins.EMITTERS.update(contacts.EMITTERS)
 words.PULSES.update(words32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
@@ -388,6 +392,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
+        if found == "edge contact":
+            return contacts.edge(block, impl, params, inputs)
         if found == "fatek":
             return fatek.emit(block, impl, params, inputs)
         if found == "pulse":
