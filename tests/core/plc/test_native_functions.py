@@ -152,6 +152,7 @@ CONTACTS = {
     "EDGE": "LDP X0\nOUT Y0\nLDF X1\nOUT Y1\nLD X2\nANDP X3\nOUT Y2\nLD X4\nANDF X5\n"
             "OUT Y3\nLD X6\nORP X7\nOUT Y4\nLD X10\nORF X11\nOUT Y5\nLD X12\nLDP X13\n"
             "ANB\nOUT Y6\n",
+    "PLS": "LD X0\nPLS M0\nLD X1\nPLF M1\nLD X2\nPLS Y0\nPLF Y1\nLD M0\nOUT Y2\n",
 }
 
 # the pulse forms (MOVP ...): run in the scan their input went on

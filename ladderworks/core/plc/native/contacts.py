@@ -1,7 +1,8 @@
 """Delta DVP's comparison and edge contacts as native code (core/plc/functions/dvp_contacts.py):
 LD= … OR>= of 16-bit values (a C200-C255 operand 32-bit) and DLD= … DOR>= of 32-bit ones,
 joined as the row's `combine` says; LDP/LDF/ANDP/ANDF/ORP/ORF with the bit's last value as
-the state's "prev". Each read from its implementation's closure (its test, join and width)."""
+the state's "prev"; PLS/PLF the same way. Each read from its implementation's closure
+(its test, join and width)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,13 @@ from collections.abc import Sequence
 
 from ladderworks.core.address import Address
 from ladderworks.core.instructions import Combine
-from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, dvp_contacts, load_all
+from ladderworks.core.plc.functions import (
+    REGISTRY,
+    FunctionImpl,
+    dvp_contacts,
+    dvp_data,
+    load_all,
+)
 from ladderworks.core.plc.functions.delta_words32 import value32
 from ladderworks.core.plc.native import words, words32
 from ladderworks.core.plc.native.builtins import Emitter, _fits
@@ -96,3 +103,30 @@ def _rows() -> tuple[dict[FunctionImpl, Emitter], dict[FunctionImpl, tuple[objec
 
 
 EMITTERS, EDGES = _rows()
+
+
+def pls_plf(b: Block, impl: FunctionImpl, params: Sequence[object],
+            inputs: list[str]) -> str | None:
+    """PLS / PLF: the output bit on for the scan the input went on / off (its last value kept
+    as "prev"); W1 = the input."""
+    if len(params) != 1 or not inputs:
+        return None
+    (address,) = params
+    if not (isinstance(address, Address) and address.bit is not None and _fits(address, 1)):
+        return None
+    f = b.f
+    act = f.truth(inputs[-1])
+    flags = b.flags()
+    before = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {PREV}')}, 0")
+    if impl is dvp_data.plf:
+        pulse = f.value(f"and i1 {before}, {f.value(f'xor i1 {act}, true')}")
+    else:
+        pulse = f.value(f"and i1 {act}, {f.value(f'xor i1 {before}, true')}")
+    words._bit(f, address, pulse)
+    kept = f.value(f"or i32 {f.value(f'and i32 {flags}, {~PREV}')}, {HAS_PREV}")
+    b.set_flags(flags, f.value(f"select i1 {act}, i32 {f.value(f'or i32 {kept}, {PREV}')}, "
+                               f"i32 {kept}"))
+    return inputs[-1]
+
+
+PULSES = (dvp_data.pls, dvp_data.plf)

@@ -113,6 +113,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "fatek"
     if impl in contacts.EDGES:
         return "edge contact"
+    if impl in contacts.PULSES:
+        return "pls"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
         return "arithmetic"
     return None
@@ -392,6 +394,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
+        if found == "pls":
+            return contacts.pls_plf(block, impl, params, inputs)
         if found == "edge contact":
             return contacts.edge(block, impl, params, inputs)
         if found == "fatek":
