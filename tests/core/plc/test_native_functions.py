@@ -178,6 +178,15 @@ FATEK = {
                    for k, form in enumerate(("", "P", "D", "DP"))),
     "DEC": "".join(f"ORG X{k}\nFUN 16{form} (-1)\n D : R{2 * k}\nFO 0\nOUT Y{k}\n"
                    for k, form in enumerate(("", "P", "D", "DP"))),
+    "CMP": "".join(f"ORG X{k}\nFUN 17{form} CMP\n Sa: R{2 * k}\n Sb: {sb}\nFO 0\nOUT Y{k}\n"
+                   f"FO 1\nOUT Y1{k}\nFO 2\nOUT Y2{k}\n"
+                   for k, (form, sb) in enumerate((("", "R1"), ("P", "0"), ("D", "R6"),
+                                                    ("DP", "-1")))),
+    "170-175": "".join(f"ORG X{k}\nANDF {170 + k}{form} ({symbol})\n Sa: R{k}\n Sb: {sb}\n"
+                       f"OUT Y{k}\n"
+                       for k, (form, symbol, sb) in enumerate((
+                           ("", "=", "R1"), ("", ">", "0"), ("D", "<", "R6"), ("", "<>", "-1"),
+                           ("D", ">=", "R2"), ("", "<=", "R5")))),
 }
 
 

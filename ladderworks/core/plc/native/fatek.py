@@ -1,7 +1,8 @@
 """Fatek FBs data boxes as native code (core/plc/functions/fatek_data.py): FUN 8 MOV, 11-14
-(+ - x /), 15-16 (+1 -1), each in its forms (`mode`: bit 0 the P form, run on EN's 0 -> 1;
+(+ - x /), 15-16 (+1 -1), 17 CMP, each in its forms (`mode`: bit 0 the P form, run on EN's 0 -> 1;
 bit 1 the D form, 32-bit). The call site's "en" and "fo0" are bits of its state block; a box
-that does not run keeps its destination and FO, W1 = the last FO0."""
+that does not run keeps its destination and FO, W1 = the last FO0. FUN 170-175 in series
+(IN and Sa op Sb) have no state."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ from collections.abc import Callable, Sequence
 from ladderworks.core.address import Address
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.fatek_data import DOUBLE, PULSE
-from ladderworks.core.plc.native.builtins import _fits, _load, _store
+from ladderworks.core.plc.native.builtins import Emitter, _fits, _load, _store
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import EN, FO0, HAS_EN, HAS_FO0, Block
 
@@ -110,7 +111,40 @@ def _step(amount: int) -> Callable[[int, Sequence[object]], Work | None]:
     return prepare
 
 
+def _compare(size: int, params: Sequence[object]) -> Work | None:
+    """FUN 17 CMP: FO0 Sa = Sb, FO1 Sa > Sb, FO2 Sa < Sb."""
+    sa, sb = params
+    a_of, b_of = _operand(sa, size), _operand(sb, size)
+    if a_of is None or b_of is None:
+        return None
+
+    def work(f: FunctionText) -> list[str]:
+        a, b = a_of(f), b_of(f)
+        return [f.value(f"icmp {test} i64 {a}, {b}") for test in ("eq", "sgt", "slt")]
+
+    return work
+
+
+def _contact(predicate: str) -> Emitter:
+    """FUN 170-175 in series: IN and Sa op Sb (no state)."""
+
+    def emit(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+        if len(params) != 3 or not inputs or not isinstance(params[0], int):
+            return None
+        size = 4 if params[0] & DOUBLE else 2
+        a_of, b_of = _operand(params[1], size), _operand(params[2], size)
+        if a_of is None or b_of is None:
+            return None
+        holds = f.value(f"icmp {predicate} i64 {a_of(f)}, {b_of(f)}")
+        return f.value(f"and i8 {inputs[0]}, {f.value(f'zext i1 {holds} to i8')}")
+
+    return emit
+
+
+_CONTACTS = {"FBS.EQ": "eq", "FBS.GT": "sgt", "FBS.LT": "slt", "FBS.NE": "ne",
+             "FBS.GE": "sge", "FBS.LE": "sle"}
 _ROWS: dict[str, Callable[[int, Sequence[object]], Work | None]] = {
+    "FBS.CMP": _compare,
     "FBS.MOV": _move, "FBS.ADD": _arithmetic(11), "FBS.SUB": _arithmetic(12),
     "FBS.MUL": _arithmetic(13), "FBS.DIV": _arithmetic(14), "FBS.INC": _step(1),
     "FBS.DEC": _step(-1),
@@ -173,3 +207,6 @@ def _boxes() -> dict[FunctionImpl, Callable[[int, Sequence[object]], Work | None
 
 
 BOXES = _boxes()
+EMITTERS: dict[FunctionImpl, Emitter] = {REGISTRY[name]: _contact(predicate)
+                                        for name, predicate in _CONTACTS.items()
+                                        if name in REGISTRY}

@@ -366,6 +366,7 @@ builtins.EMITTERS.update(bcd.EMITTERS)
 builtins.EMITTERS.update(words.EMITTERS)
 builtins.EMITTERS.update(words32.EMITTERS)
 builtins.EMITTERS.update(contacts.EMITTERS)
+builtins.EMITTERS.update(fatek.EMITTERS)
 words.PULSES.update(words32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
