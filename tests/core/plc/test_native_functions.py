@@ -186,7 +186,10 @@ FATEK = {
                        f"OUT Y{k}\n"
                        for k, (form, symbol, sb) in enumerate((
                            ("", "=", "R1"), ("", ">", "0"), ("D", "<", "R6"), ("", "<>", "-1"),
-                           ("D", ">=", "R2"), ("", "<=", "R5")))),
+                           ("D", ">=", "R2"), ("", "<=", "R5"))))
+               + "".join(f"ORG X{k + 6}\nANDF {170 + k} ({symbol})\n Sa: R7\n Sb: R7\n"
+                         f"OUT Y1{k}\n"  # equal values: the boundary of every test
+                         for k, symbol in enumerate(("=", ">", "<", "<>", ">=", "<="))),
 }
 
 
