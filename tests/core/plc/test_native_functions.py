@@ -223,7 +223,7 @@ def _run(binary: BinaryProgram, monitored: bool, scans: list, counters: bool,
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 @pytest.mark.parametrize("row", sorted(PMC))
-@settings(max_examples=examples(25), deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(scans=_scans)
 def test_a_pmc_row_runs_natively_as_in_python(row: str, monitored: bool, scans: list) -> None:
     _run(_pmc(PMC[row]), monitored, scans, counters=False)
@@ -231,7 +231,7 @@ def test_a_pmc_row_runs_natively_as_in_python(row: str, monitored: bool, scans: 
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 @pytest.mark.parametrize("row", sorted({**DELTA, **DELTA_PULSE}))
-@settings(max_examples=examples(25), deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(scans=_scans)
 def test_a_delta_row_runs_natively_as_in_python(row: str, monitored: bool, scans: list,
                                                 tmp_path_factory: pytest.TempPathFactory
@@ -242,7 +242,7 @@ def test_a_delta_row_runs_natively_as_in_python(row: str, monitored: bool, scans
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 @pytest.mark.parametrize("rows", sorted(CONTACTS))
-@settings(max_examples=examples(25), deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(scans=_scans)
 def test_delta_contacts_run_natively_as_in_python(rows: str, monitored: bool, scans: list,
                                                   tmp_path_factory: pytest.TempPathFactory
@@ -253,7 +253,7 @@ def test_delta_contacts_run_natively_as_in_python(rows: str, monitored: bool, sc
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 @pytest.mark.parametrize("row", sorted(FATEK))
-@settings(max_examples=examples(25), deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(scans=_scans)
 def test_a_fatek_row_runs_natively_as_in_python(row: str, monitored: bool, scans: list) -> None:
     result = parse_bytes(FATEK[row].encode("ascii"), "fatek")
