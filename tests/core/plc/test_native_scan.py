@@ -168,8 +168,8 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nPARI D0\n"
-                       "WRT Y0.0\n")  # PARI: called back
+    binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nDCNV D0 D2\n"
+                       "WRT Y0.0\n")  # DCNV: called back
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
     assert len(engine._current.callbacks) == 1

@@ -24,6 +24,8 @@ ELAPSED, AT, WAKE = 2, 4, 6
 HAS_ELAPSED, ELAPSED_SET, HAS_AT, HAS_WAKE, HAS_ON, ON, HAS_W1, W1 = (
     1, 2, 4, 8, 16, 32, 256, 512)
 HAS_ACT, ACT, HAS_VALUE = 1024, 2048, 4096  # counters: the last ACT; CTRB's value (at ELAPSED)
+HAS_PREV, PREV = 1 << 13, 1 << 14  # Delta's pulse forms: the input at the last execution
+HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "en", "fo0"
 CHANGED = 1 << 15
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
@@ -115,6 +117,12 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
         state["w1"] = bool(flags & W1)
     if flags & HAS_ACT:
         state["act"] = bool(flags & ACT)
+    if flags & HAS_PREV:
+        state["prev"] = bool(flags & PREV)
+    if flags & HAS_EN:
+        state["en"] = bool(flags & EN)
+    if flags & HAS_FO0:
+        state["fo0"] = bool(flags & FO0)
     if flags & HAS_VALUE:
         state["value"] = _get64(words, base + ELAPSED)
 
@@ -130,7 +138,9 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
                 _set64(words, base + offset, int(value))
                 if key == "elapsed":
                     flags |= ELAPSED_SET
-    for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1), ("act", HAS_ACT, ACT)):
+    for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1), ("act", HAS_ACT, ACT),
+                                ("prev", HAS_PREV, PREV), ("en", HAS_EN, EN),
+                                ("fo0", HAS_FO0, FO0)):
         if key in state:
             flags |= has | (value_bit if state[key] else 0)
     if "value" in state:

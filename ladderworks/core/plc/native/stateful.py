@@ -22,11 +22,28 @@ from ladderworks.core.plc.functions import (
     convert,
     counters,
     load_all,
+    parity,
     signed_range,
     timers,
     transfer,
 )
-from ladderworks.core.plc.native import layout
+from ladderworks.core.plc.functions import (
+    rotation as rotations,
+)
+from ladderworks.core.plc.functions import (
+    shift as shifts,
+)
+from ladderworks.core.plc.native import (
+    bcd,
+    builtins,
+    contacts,
+    fatek,
+    layout,
+    rotation,
+    shift,
+    words,
+    words32,
+)
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import (
     AT,
@@ -78,6 +95,26 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "tmrc"
     if impl is timers.tmrbf:
         return "tmrbf"
+    if bcd.is_bcd_arithmetic(spec, impl):
+        return "bcd"
+    if impl is shifts.sft:
+        return "sft"
+    if impl is rotations.rot:
+        return "rot"
+    if impl is rotations.rotb:
+        return "rotb"
+    if impl is parity.pari:
+        return "pari"
+    if impl is convert.cod:
+        return "cod"
+    if impl in words.PULSES:
+        return "pulse"
+    if impl in fatek.BOXES:
+        return "fatek"
+    if impl in contacts.EDGES:
+        return "edge contact"
+    if impl in contacts.PULSES:
+        return "pls"
     if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
         return "arithmetic"
     return None
@@ -324,6 +361,13 @@ def _arithmetic(operation: Operation) -> Callable[[Block, Sequence[object], list
     return emit
 
 
+# the stateless rows of bcd.py and words.py join builtins' (they use its helpers)
+builtins.EMITTERS.update(bcd.EMITTERS)
+builtins.EMITTERS.update(words.EMITTERS)
+builtins.EMITTERS.update(words32.EMITTERS)
+builtins.EMITTERS.update(contacts.EMITTERS)
+builtins.EMITTERS.update(fatek.EMITTERS)
+words.PULSES.update(words32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
@@ -351,6 +395,26 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _dcnvb(block, params, inputs, dialect)
         if found == "codb":
             return _codb(block, params, inputs)
+        if found == "pls":
+            return contacts.pls_plf(block, impl, params, inputs)
+        if found == "edge contact":
+            return contacts.edge(block, impl, params, inputs)
+        if found == "fatek":
+            return fatek.emit(block, impl, params, inputs)
+        if found == "pulse":
+            return words.pulse(block, impl, params, inputs)
+        if found == "pari":
+            return shift.pari(block, params, inputs)
+        if found == "cod":
+            return bcd.cod(block, params, inputs)
+        if found == "rot":
+            return rotation.rot(block, params, inputs)
+        if found == "rotb":
+            return rotation.rotb(block, params, inputs)
+        if found == "sft":
+            return shift.sft(block, params, inputs)
+        if found == "bcd":
+            return bcd.arithmetic(block, spec.operation, params, inputs)
         if found == "arithmetic":
             return _arithmetic(spec.operation)(block, params, inputs)
     except (ValueError, TypeError):

@@ -1,0 +1,169 @@
+"""Delta DVP's 32-bit data rows as native code (DMOV, DADD, DSUB, DMUL, DDIV, DINC, DDEC,
+DCMP, DZCP and their pulse forms: core/plc/functions/delta_words32.py), made as words.py makes
+the 16-bit ones: a 32-bit operand is a device pair or a C200-C255 counter (a C0-C199 counter
+its 16 bits); an output pair past its area's end (an operation error in Python) calls back."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from ladderworks.core.address import Address
+from ladderworks.core.dialects.delta.rows_extra import ACTIONS
+from ladderworks.core.instructions import lookup
+from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, delta_words32, load_all
+from ladderworks.core.plc.functions.dvp_data import M1020, M1021, M1022, M1067, M1068
+from ladderworks.core.plc.native.builtins import _fits, _load, _store
+from ladderworks.core.plc.native.ir_text import FunctionText
+from ladderworks.core.plc.native.words import (
+    Prepare,
+    _bit,
+    _place,
+    _Refused,
+    _results,
+    _row,
+    _write,
+)
+
+_I32 = (-(1 << 31), (1 << 31) - 1)
+Body = Callable[[FunctionText], None]
+
+
+def _width(operand: object) -> int:
+    if not isinstance(operand, Address):
+        raise _Refused
+    width = delta_words32.width32(operand)
+    if width not in (2, 4) or not _fits(operand, width):
+        raise _Refused
+    return width
+
+
+def _source(operand: object) -> Callable[[FunctionText], str]:
+    """`value32` as an i64 (checked now, emitted when called)."""
+    if isinstance(operand, bool) or not isinstance(operand, int | Address):
+        raise _Refused
+    if isinstance(operand, int):
+        if not _I32[0] <= operand <= _I32[1]:
+            raise _Refused
+        return lambda f: str(operand)
+    width = _width(operand)
+    return lambda f: f.value(f"sext i{8 * width} {_load(f, operand, width)} to i64")
+
+
+def _output(operand: object) -> tuple[Address, int]:
+    width = _width(operand)
+    assert isinstance(operand, Address)
+    return operand, width
+
+
+def _move(params: Sequence[object]) -> Body:
+    source, output = params
+    read, (place, width) = _source(source), _output(output)
+    return lambda f: _write(f, place, read(f), width)
+
+
+def _add_sub(operator: str) -> Prepare:
+    def prepare(params: Sequence[object]) -> Body:
+        s1, s2, output = params
+        first, second, (place, width) = _source(s1), _source(s2), _output(output)
+        for flag in (M1020, M1021, M1022):
+            _place(flag, 1)
+
+        def body(f: FunctionText) -> None:
+            exact = f.value(f"{operator} i64 {first(f)}, {second(f)}")
+            _write(f, place, exact, width)
+            low = f.value(f"trunc i64 {exact} to i32")
+            _bit(f, M1020, f.value(f"icmp eq i32 {low}, 0"))
+            _bit(f, M1021, f.value(f"icmp slt i64 {exact}, {_I32[0]}"))
+            _bit(f, M1022, f.value(f"icmp sgt i64 {exact}, {_I32[1]}"))
+
+        return body
+
+    return prepare
+
+
+def _mul(params: Sequence[object]) -> Body:
+    s1, s2, output = params
+    first, second, place = _source(s1), _source(s2), _place(output, 8)
+    return lambda f: _store(f, place, 8, f.value(f"mul i64 {first(f)}, {second(f)}"))
+
+
+def _div(params: Sequence[object]) -> Body:
+    s1, s2, output = params
+    first, second, place = _source(s1), _source(s2), _place(output, 8)
+    _place(M1067, 1), _place(M1068, 1)
+
+    def body(f: FunctionText) -> None:
+        a, c = first(f), second(f)
+        zero, divide, after = f.label(), f.label(), f.label()
+        f.add(f"br i1 {f.value(f'icmp eq i64 {c}, 0')}, label %{zero}, label %{divide}")
+        f.start(zero)  # an operation error: nothing written
+        _bit(f, M1067, "true")
+        _bit(f, M1068, "true")
+        f.add(f"br label %{after}")
+        f.start(divide)
+        _write(f, place, f.value(f"sdiv i64 {a}, {c}"), 4)
+        _write(f, place.offset(4), f.value(f"srem i64 {a}, {c}"), 4)
+        f.join(after)
+
+    return body
+
+
+def _step(amount: int) -> Prepare:
+    def prepare(params: Sequence[object]) -> Body:
+        (output,) = params
+        read, (place, width) = _source(output), _output(output)
+        return lambda f: _write(f, place, f.value(f"add i64 {read(f)}, {amount}"), width)
+
+    return prepare
+
+
+def _cmp(params: Sequence[object]) -> Body:
+    s1, s2, output = params
+    first, second, bits = _source(s1), _source(s2), _results(output)
+
+    def body(f: FunctionText) -> None:
+        a, c = first(f), second(f)
+        for place, test in zip(bits, ("sgt", "eq", "slt"), strict=True):
+            _bit(f, place, f.value(f"icmp {test} i64 {a}, {c}"))
+
+    return body
+
+
+def _zcp(params: Sequence[object]) -> Body:
+    low, high, source, output = params
+    lo, hi, read, bits = _source(low), _source(high), _source(source), _results(output)
+
+    def body(f: FunctionText) -> None:
+        lower, upper, s = lo(f), hi(f), read(f)
+        below = f.value(f"icmp slt i64 {s}, {lower}")
+        above = f.value(f"and i1 {f.value(f'xor i1 {below}, true')}, "
+                        f"{f.value(f'icmp sgt i64 {s}, {upper}')}")
+        inside = f.value(f"xor i1 {f.value(f'or i1 {below}, {above}')}, true")
+        for place, value in zip(bits, (below, inside, above), strict=True):
+            _bit(f, place, value)
+
+    return body
+
+
+_PREPARE: dict[str, Prepare] = {
+    "move": _move, "add": _add_sub("add"), "subtract": _add_sub("sub"), "multiply": _mul,
+    "divide": _div, "increment": _step(1), "decrement": _step(-1), "compare": _cmp,
+    "zone": _zcp,
+}
+
+
+def _rows(pulse: bool) -> dict[FunctionImpl, Prepare]:
+    """delta_words32's rows (pulse forms or not), by their implementation."""
+    load_all()
+    found: dict[FunctionImpl, Prepare] = {}
+    for name, action in ACTIONS.items():
+        impl, spec = REGISTRY.get(name), lookup(name)
+        if impl is None or spec is None or spec.pulse != pulse or action not in _PREPARE \
+                or getattr(impl, "__module__", "") != delta_words32.__name__:
+            continue
+        found[impl] = _PREPARE[action]
+    return found
+
+
+EMITTERS = {impl: _row(prepare) for impl, prepare in _rows(False).items()}
+PULSES = _rows(True)
