@@ -170,6 +170,10 @@ class DeviceMap:
         """The spelling of a value of `width` bytes at `address` (the device's own here)."""
         return self.format(address)
 
+    def laid_out(self, address: Address) -> bool:
+        """True for a place LadderWorks laid out itself (no absolute address in the PLC)."""
+        return False
+
     def width_at(self, address: Address) -> int:
         """The byte width of the word at `address` (2 unless a 32-bit device lives there)."""
         found = self.device_of(address)

@@ -70,10 +70,9 @@ def _spell(address: Address, width: int, dialect: str | None) -> str:
     found = dialects.get(dialect)
     if found is None:
         return str(address)
-    # a place no device of the dialect spells (an optimized S7 DB's member) has no absolute
-    # address to show, as TIA's watch table leaves it blank
-    return found.devices.format_sized(address, max(width, 1)) or found.devices.format(address) \
-        or ""
+    if found.devices.laid_out(address):  # an optimized S7 DB's member: no absolute address,
+        return ""  # as TIA's watch table leaves it blank
+    return found.devices.format_sized(address, max(width, 1)) or found.format_address(address)
 
 
 def _symbol(text: str, symbols: SymbolTable) -> tuple[str, Address] | None:

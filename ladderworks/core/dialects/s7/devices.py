@@ -112,6 +112,10 @@ class S7DeviceMap(DeviceMap):
         """The S7 spelling of a value of `width` bytes (`%MW2`, `%DB1.DBD4`)."""
         return format_absolute(address, width)
 
+    def laid_out(self, address: Address) -> bool:
+        """True for an optimized DB's member: LadderWorks placed it, TIA gives it no address."""
+        return address.area is Area.D
+
     def width_at(self, address: Address) -> int:
         """A byte address's width: 1 (S7 says the width in the spelling)."""
         return 1
