@@ -110,9 +110,10 @@ def _mul(params: Sequence[object]) -> Callable[[FunctionText], None]:
     return lambda f: _write(f, place, f.value(f"mul i64 {first(f)}, {second(f)}"), 4)
 
 
-def _div(params: Sequence[object]) -> Callable[[FunctionText], None]:
-    s1, s2, output = params
-    first, second, place = _source(s1), _source(s2), _place(output, 4)
+def divided(first: Callable[[FunctionText], str], second: Callable[[FunctionText], str],
+            place: Address, word: int) -> Callable[[FunctionText], None]:
+    """A division's body: the quotient and the remainder in two `word`-byte halves at `place`;
+    by zero an operation error (M1067, M1068) and nothing written."""
     _place(M1067, 1), _place(M1068, 1)
 
     def body(f: FunctionText) -> None:
@@ -124,11 +125,16 @@ def _div(params: Sequence[object]) -> Callable[[FunctionText], None]:
         _bit(f, M1068, "true")
         f.add(f"br label %{after}")
         f.start(divide)
-        _write(f, place, f.value(f"sdiv i64 {a}, {c}"), 2)
-        _write(f, place.offset(2), f.value(f"srem i64 {a}, {c}"), 2)
+        _write(f, place, f.value(f"sdiv i64 {a}, {c}"), word)
+        _write(f, place.offset(word), f.value(f"srem i64 {a}, {c}"), word)
         f.join(after)
 
     return body
+
+
+def _div(params: Sequence[object]) -> Callable[[FunctionText], None]:
+    s1, s2, output = params
+    return divided(_source(s1), _source(s2), _place(output, 4), 2)
 
 
 def _step(amount: int) -> Callable[[Sequence[object]], Callable[[FunctionText], None]]:

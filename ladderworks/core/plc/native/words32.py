@@ -11,7 +11,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta.rows_extra import ACTIONS
 from ladderworks.core.instructions import lookup
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, delta_words32, load_all
-from ladderworks.core.plc.functions.dvp_data import M1020, M1021, M1022, M1067, M1068
+from ladderworks.core.plc.functions.dvp_data import M1020, M1021, M1022
 from ladderworks.core.plc.native.builtins import _fits, _load, _store
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.words import (
@@ -22,6 +22,7 @@ from ladderworks.core.plc.native.words import (
     _results,
     _row,
     _write,
+    divided,
 )
 
 _I32 = (-(1 << 31), (1 << 31) - 1)
@@ -89,23 +90,7 @@ def _mul(params: Sequence[object]) -> Body:
 
 def _div(params: Sequence[object]) -> Body:
     s1, s2, output = params
-    first, second, place = _source(s1), _source(s2), _place(output, 8)
-    _place(M1067, 1), _place(M1068, 1)
-
-    def body(f: FunctionText) -> None:
-        a, c = first(f), second(f)
-        zero, divide, after = f.label(), f.label(), f.label()
-        f.add(f"br i1 {f.value(f'icmp eq i64 {c}, 0')}, label %{zero}, label %{divide}")
-        f.start(zero)  # an operation error: nothing written
-        _bit(f, M1067, "true")
-        _bit(f, M1068, "true")
-        f.add(f"br label %{after}")
-        f.start(divide)
-        _write(f, place, f.value(f"sdiv i64 {a}, {c}"), 4)
-        _write(f, place.offset(4), f.value(f"srem i64 {a}, {c}"), 4)
-        f.join(after)
-
-    return body
+    return divided(_source(s1), _source(s2), _place(output, 8), 4)
 
 
 def _step(amount: int) -> Prepare:
