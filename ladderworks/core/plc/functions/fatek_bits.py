@@ -7,18 +7,8 @@ from __future__ import annotations
 from ladderworks.core.address import Address
 from ladderworks.core.plc.functions import FunctionContext, FunctionImpl, function
 from ladderworks.core.plc.functions.fatek_data import runs, width
-from ladderworks.core.plc.functions.fatek_timing import operand_value, write_outputs
-from ladderworks.core.plc.functions.fatek_words import signed
-
-
-def _out(ctx: FunctionContext, state: dict, fo: object, *bits: bool) -> bool:
-    write_outputs(ctx.memory, fo, *bits)
-    state["fo0"] = bits[0]
-    return bits[0]
-
-
-def _held(state: dict) -> bool:
-    return bool(state.get("fo0", False))
+from ladderworks.core.plc.functions.fatek_timing import operand_value
+from ladderworks.core.plc.functions.fatek_words import _held, _out, signed
 
 
 @function("FBS.MOVN")

@@ -45,15 +45,17 @@ def _width(operand: object) -> int:
     return width
 
 
-def _source(operand: object) -> Callable[[FunctionText], str]:
-    """`dvp_data.value` as an i64 (checked now, emitted when called)."""
+def _source(operand: object, measure: Callable[[object], int] | None = None
+            ) -> Callable[[FunctionText], str]:
+    """`dvp_data.value` as an i64 (checked now, emitted when called); `measure` gives an
+    address operand's width (`_width`, else the 32-bit forms' own)."""
     if isinstance(operand, bool) or not isinstance(operand, int | Address):
         raise _Refused
     if isinstance(operand, int):
         if not _I32[0] <= operand <= _I32[1]:
             raise _Refused
         return lambda f: str(operand)
-    width = _width(operand)
+    width = (measure or _width)(operand)
     return lambda f: f.value(f"sext i{8 * width} {_load(f, operand, width)} to i64")
 
 

@@ -12,7 +12,8 @@ from ladderworks.core.dialects.delta.rows_extra import ACTIONS
 from ladderworks.core.instructions import lookup
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, delta_words32, load_all
 from ladderworks.core.plc.functions.dvp_data import M1020, M1021, M1022
-from ladderworks.core.plc.native.builtins import _fits, _load, _store
+from ladderworks.core.plc.native import words
+from ladderworks.core.plc.native.builtins import _fits, _store
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.words import (
     Prepare,
@@ -40,14 +41,7 @@ def _width(operand: object) -> int:
 
 def _source(operand: object) -> Callable[[FunctionText], str]:
     """`value32` as an i64 (checked now, emitted when called)."""
-    if isinstance(operand, bool) or not isinstance(operand, int | Address):
-        raise _Refused
-    if isinstance(operand, int):
-        if not _I32[0] <= operand <= _I32[1]:
-            raise _Refused
-        return lambda f: str(operand)
-    width = _width(operand)
-    return lambda f: f.value(f"sext i{8 * width} {_load(f, operand, width)} to i64")
+    return words._source(operand, _width)
 
 
 def _output(operand: object) -> tuple[Address, int]:
