@@ -16,7 +16,8 @@ LUPDATE = Path(PySide6.__file__).parent / "lupdate"
 def translated_sources() -> list[Path]:
     """The files lupdate reads: the GUI, and the core's diagnostic templates (QT_TRANSLATE_NOOP)."""
     gui = sorted((ROOT / "ladderworks" / "gui").rglob("*.py"))
-    return [*gui, ROOT / "ladderworks" / "core" / "diagnostics.py"]
+    return [*gui, ROOT / "ladderworks" / "core" / "diagnostics.py",
+            ROOT / "ladderworks" / "core" / "dialect_messages.py"]
 
 
 def unfinished(ts: Path) -> list[tuple[str, str]]:

@@ -377,1337 +377,1337 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="74"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="72"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="78"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="76"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>this is not a ladder program (no %@ section and no instruction)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="80"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="78"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="82"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="80"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="86"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="84"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: the number is too long</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="26"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="24"/>
         <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
         <translation>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="28"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="26"/>
         <source>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</source>
         <translation>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="30"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="28"/>
         <source>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</source>
         <translation>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="32"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="30"/>
         <source>&apos;{text}&apos;: bit number must be 0 to 7</source>
         <translation>&apos;{text}&apos;: bit number must be 0 to 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="33"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="31"/>
         <source>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</source>
         <translation>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="35"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="33"/>
         <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
         <translation>&apos;{text}&apos;: a byte address is needed here, without a bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="37"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="35"/>
         <source>&apos;{text}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</source>
         <translation>&apos;{text}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="39"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="37"/>
         <source>&apos;{text}&apos;: a bit address takes no width</source>
         <translation>&apos;{text}&apos;: a bit address takes no width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="41"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="39"/>
         <source>the ladder section must begin with %@3</source>
         <translation>the ladder section must begin with %@3</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="42"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="40"/>
         <source>the ladder section must end with a line &apos;%&apos;</source>
         <translation>the ladder section must end with a line &apos;%&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="43"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="41"/>
         <source>unexpected text &apos;{text}&apos;</source>
         <translation>unexpected text &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="44"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="42"/>
         <source>text outside any section: &apos;{text}&apos;</source>
         <translation>text outside any section: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="45"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="43"/>
         <source>section %@{number} appears twice</source>
         <translation>section %@{number} appears twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="46"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="44"/>
         <source>unknown section {header}: kept as it is</source>
         <translation>unknown section {header}: kept as it is</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="47"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="45"/>
         <source>unknown instruction &apos;{name}&apos;</source>
         <translation>unknown instruction &apos;{name}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="48"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="46"/>
         <source>{name} needs an address</source>
         <translation>{name} needs an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="49"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="47"/>
         <source>{name} takes no operand, found &apos;{text}&apos;</source>
         <translation>{name} takes no operand, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="50"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="48"/>
         <source>{name} needs {expected} parameters, found {found}</source>
         <translation>{name} needs {expected} parameters, found {found}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="52"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="50"/>
         <source>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="54"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="52"/>
         <source>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="56"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="54"/>
         <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
         <translation>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="58"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="56"/>
         <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
         <translation>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="62"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="60"/>
         <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="66"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="64"/>
         <source>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</source>
         <translation>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="69"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="67"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>a parameter line &apos;{text}&apos; without a SUB instruction before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="71"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="69"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>the file is neither UTF-8 nor Turkish Windows (cp1254) text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="73"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="71"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>syntax error at &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="76"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="74"/>
         <source>a saved drawing ({lines} line(s)) is damaged: it is kept as comment text</source>
         <translation>a saved drawing ({lines} line(s)) is damaged: it is kept as comment text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="88"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="86"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>open circuit: this element is not connected to the right side</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="90"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="88"/>
         <source>element not connected to the left rail</source>
         <translation>element not connected to the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="91"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="89"/>
         <source>a coil must be at the right end of the network</source>
         <translation>a coil must be at the right end of the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="93"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="91"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>a coil cannot sit straight on the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="94"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="92"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>bridge circuit: a vertical link joins two branches in the middle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="96"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="94"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>short circuit: a wire bypasses the element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="97"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="95"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>the logic needs more than 8 stack levels (ST8)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="99"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="97"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>power would flow right to left here; ladder flows left to right only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="101"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="99"/>
         <source>the network has no coil or function</source>
         <translation>the network has no coil or function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="102"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="100"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} needs its {count} control inputs connected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="104"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="102"/>
         <source>this element has no address yet</source>
         <translation>this element has no address yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="105"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="103"/>
         <source>this edge or comparison contact has no form for this place in the dialect (put it in series after another contact)</source>
         <translation>this edge or comparison contact has no form for this place in the dialect (put it in series after another contact)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="108"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="106"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>coils hang on different points of the logic; join them to one point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="110"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="108"/>
         <source>only coils may follow the output of {name}</source>
         <translation>only coils may follow the output of {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="111"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="109"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>one function box per network: put {name} in a network of its own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="114"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="112"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>cell ({row}, {col}) is outside the grid</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="115"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="113"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="117"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="115"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} does not fit here: a box needs two contact columns</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="119"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="117"/>
         <source>an edge or comparison contact has no normally closed form</source>
         <translation>an edge or comparison contact has no normally closed form</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="121"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="119"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>there is no suitable element at cell ({row}, {col})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="121"/>
         <source>no function box with FO outputs at cell ({row}, {col})</source>
         <translation>no function box with FO outputs at cell ({row}, {col})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
         <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
         <translation>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
         <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
         <translation>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>END ends the program and stays its last network: draw new networks above it</source>
         <translation>END ends the program and stays its last network: draw new networks above it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} would be replaced with itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also in network {other})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="10"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII format: the text opened by {quote} is never closed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="12"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII format: a repeat count must be 1 to 999, found {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="14"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="18"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="21"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII format: text after END: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="23"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII format: END is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="24"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; is not a Fatek instruction</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="26"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="28"/>
         <source>{name} needs a device</source>
         <translation>{name} needs a device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="29"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; is not a Fatek device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="30"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} cannot take &apos;{text}&apos; (use {kinds})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="32"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; is out of range ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="33"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} with nothing before it: a network starts with ORG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="35"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} needs two blocks: start the second one with LD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="37"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} is set twice in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="39"/>
         <source>a network has at most {limit} TR points</source>
         <translation>a network has at most {limit} TR points</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="41"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>LD TR{number} before OUT TR{number} in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="43"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} on the left rail: put ORG SHORT before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="45"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="47"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number} is not a Fatek function LadderWorks knows</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="49"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: the operand line {param} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="51"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} takes no more operands, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="53"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="55"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="57"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} is kept and drawn but not simulated: its outputs stay 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="59"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos; is not the time base of {name} ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="61"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: no function output here (FO0-FO7 after a box)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="63"/>
         <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
         <translation>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="65"/>
         <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
         <translation>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="69"/>
         <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
         <translation>&apos;{text}&apos; is not a Fatek device: the line is skipped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="71"/>
         <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
         <translation>the comments were read in code page {chosen}; they read as {others} too: check the names</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="75"/>
         <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
         <translation>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="79"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="82"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="84"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>the .pdw file is cut short: its record at byte {offset} runs past the end</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="86"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>the .pdw file is damaged: the record at byte {offset} fails its checksum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="88"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>the .pdw file is damaged: the record at byte {offset} is malformed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="90"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>the .pdw file holds no program (checked up to byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="92"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="96"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>the .pdw file is damaged: its program image is wrong at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="98"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="102"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="106"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="110"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>the program ends inside an instruction at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="198"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
         <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
         <translation>{name} is kept and drawn but not simulated: the scan passes it by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
         <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
         <translation>{count} instructions are not simulated, the scan passes them by (line): {names}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
         <translation>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>{name}: operand {index} is missing</source>
         <translation>{name}: operand {index} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="223"/>
         <source>step {step} is not after step {previous}: the step numbers must grow</source>
         <translation>step {step} is not after step {previous}: the step numbers must grow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>byte {offset}: the program does not end with END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>byte {offset} (step {step}): instructions after END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>byte {offset}: a text section of the .dvp project is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>byte {offset}: a device comment line is not DEVICE$&amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>the project holds no program: no compiled instruction list and an empty ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>the project was saved without compiling: its program is read from its ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>NEXT without a FOR before it</source>
         <translation>NEXT without a FOR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MC or STL without its MCR or RET after it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>MCR or RET without its MC or STL before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>FOR without its NEXT</source>
         <translation>FOR without its NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="461"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="462"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>&apos;{text}&apos; is neither a name of the program nor an address</source>
         <translation>&apos;{text}&apos; is neither a name of the program nor an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</source>
         <translation>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>&apos;{text}&apos; is a {type}: the watch table has no format for it</source>
         <translation>&apos;{text}&apos; is a {type}: the watch table has no format for it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>&apos;{text}&apos; is not a date from D#1990-01-01 to D#2169-06-06 (e.g. D#2024-01-31)</source>
         <translation>&apos;{text}&apos; is not a date from D#1990-01-01 to D#2169-06-06 (e.g. D#2024-01-31)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
         <source>&apos;{text}&apos; is not a time of day (e.g. TOD#12:30:00.000)</source>
         <translation>&apos;{text}&apos; is not a time of day (e.g. TOD#12:30:00.000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
         <source>the value has {length} characters: at most {limit} are read</source>
         <translation>the value has {length} characters: at most {limit} are read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>no modify value to write</source>
         <translation>no modify value to write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
         <translation>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
         <translation>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
         <translation>&apos;{text}&apos; is out of range: {low} to {high}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
         <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
         <translation>&apos;{text}&apos; is not a real number (e.g. 1.5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="485"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
         <translation>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
         <translation>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
         <translation>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
         <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
         <translation>&apos;{text}&apos; is longer than the string&apos;s {length} characters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
         <source>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</source>
         <translation>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="497"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="113"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="115"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="501"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="117"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: the text ends inside {what} (cut off?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="119"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="121"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="124"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} needs its pin {pin}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="126"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: the wiring of {part} cannot be followed ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="512"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="128"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: there is no label &apos;{label}&apos; in this block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="130"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: a {language} network is shown, not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="132"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: the block &apos;{block}&apos; it calls is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="134"/>
         <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
         <translation>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="137"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="139"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="526"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="142"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="144"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="146"/>
         <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
         <translation>network {network}, row {row}, column {column}: the contact or coil has no operand</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="533"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="149"/>
         <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
         <translation>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="152"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="155"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="158"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="161"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="163"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="166"/>
         <source>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</source>
         <translation>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="169"/>
         <source>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</source>
         <translation>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="174"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="177"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="179"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="180"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="182"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="185"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="188"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="191"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="578"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="194"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="581"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="197"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="584"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="200"/>
         <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
         <translation>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="587"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="203"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>

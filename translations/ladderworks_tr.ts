@@ -377,1337 +377,1337 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="74"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="72"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>buradaki {count} bayt geçerli {encoding} değil; olduğu gibi korunur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="78"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="76"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>bu bir ladder programı değil (%@ bölümü ve komut yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="80"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="78"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>{section} bölümünde anlaşılamayan satır: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="82"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="80"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) {letter} ve bir sayı olmalı, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="86"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="84"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: sayı çok uzun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="26"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="24"/>
         <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
         <translation>&apos;{text}&apos; bir adres değil (örneğin X2.1 veya R100 olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="28"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="26"/>
         <source>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</source>
         <translation>&apos;{text}&apos;: bilinmeyen alan &apos;{area}&apos; (X, Y, F, G, R, A, D, T, C veya K kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="30"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="28"/>
         <source>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</source>
         <translation>&apos;{text}&apos;: {area} alanı için bayt numarası sınır dışı ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="32"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="30"/>
         <source>&apos;{text}&apos;: bit number must be 0 to 7</source>
         <translation>&apos;{text}&apos;: bit numarası 0 ile 7 arasında olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="33"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="31"/>
         <source>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</source>
         <translation>&apos;{text}&apos;: burada bit adresi gerekir (örneğin {text}.0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="35"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="33"/>
         <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
         <translation>&apos;{text}&apos;: burada bitsiz bir bayt adresi gerekir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="37"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="35"/>
         <source>&apos;{text}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</source>
         <translation>&apos;{text}&apos;: &apos;:&apos; işaretinden sonraki genişlik 1, 2 veya 4 olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="39"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="37"/>
         <source>&apos;{text}&apos;: a bit address takes no width</source>
         <translation>&apos;{text}&apos;: bit adresine genişlik verilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="41"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="39"/>
         <source>the ladder section must begin with %@3</source>
         <translation>ladder bölümü %@3 ile başlamalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="42"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="40"/>
         <source>the ladder section must end with a line &apos;%&apos;</source>
         <translation>ladder bölümü &apos;%&apos; satırıyla bitmeli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="43"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="41"/>
         <source>unexpected text &apos;{text}&apos;</source>
         <translation>beklenmeyen metin &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="44"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="42"/>
         <source>text outside any section: &apos;{text}&apos;</source>
         <translation>hiçbir bölümün içinde olmayan metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="45"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="43"/>
         <source>section %@{number} appears twice</source>
         <translation>%@{number} bölümü iki kez var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="46"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="44"/>
         <source>unknown section {header}: kept as it is</source>
         <translation>bilinmeyen bölüm {header}: olduğu gibi korundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="47"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="45"/>
         <source>unknown instruction &apos;{name}&apos;</source>
         <translation>bilinmeyen komut &apos;{name}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="48"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="46"/>
         <source>{name} needs an address</source>
         <translation>{name} bir adres ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="49"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="47"/>
         <source>{name} takes no operand, found &apos;{text}&apos;</source>
         <translation>{name} operand almaz, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="50"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="48"/>
         <source>{name} needs {expected} parameters, found {found}</source>
         <translation>{name} {expected} parametre ister, {found} bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="52"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="50"/>
         <source>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) sayı olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="54"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="52"/>
         <source>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) adres olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="56"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="54"/>
         <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
         <translation>{name}: {index}. parametre ({param}) {lo} ile {hi} arasında olmalı, {value} bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="58"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="56"/>
         <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
         <translation>{name}: {index}. parametre ({param}) şunlardan biri olmalı: {choices}; {value} bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="62"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="60"/>
         <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) en çok 4 ikili hane olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="66"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="64"/>
         <source>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</source>
         <translation>SUB {number} komut tablosunda yok: parametreleriyle korunur, kutu olarak çizilir, W1 = ACT olarak simüle edilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="69"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="67"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>önünde SUB komutu olmayan parametre satırı &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="71"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="69"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>dosya ne UTF-8 ne de Türkçe Windows (cp1254) metni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="73"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="71"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>&apos;{text}&apos; yerinde yazım hatası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="76"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="74"/>
         <source>a saved drawing ({lines} line(s)) is damaged: it is kept as comment text</source>
         <translation>kaydedilmiş bir çizim ({lines} satır) bozuk: açıklama metni olarak saklandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="88"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="86"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>açık devre: bu eleman sağ tarafa bağlı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="90"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="88"/>
         <source>element not connected to the left rail</source>
         <translation>eleman sol baraya bağlı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="91"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="89"/>
         <source>a coil must be at the right end of the network</source>
         <translation>çıkış (bobin) devrenin sağ ucunda olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="93"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="91"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>çıkış (bobin) doğrudan sol baraya bağlanamaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="94"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="92"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>köprü devre: dikey çizgi iki kolu ortadan birleştiriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="96"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="94"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>kısa devre: bir çizgi elemanı atlıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="97"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="95"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>mantık 8&apos;den fazla yığın seviyesi (ST8) gerektiriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="99"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="97"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>burada enerji sağdan sola akardı; ladder yalnız soldan sağa akar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="101"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="99"/>
         <source>the network has no coil or function</source>
         <translation>devrede çıkış veya fonksiyon yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="102"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="100"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} fonksiyonunun {count} kontrol girişi bağlanmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="104"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="102"/>
         <source>this element has no address yet</source>
         <translation>bu elemanın henüz adresi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="105"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="103"/>
         <source>this edge or comparison contact has no form for this place in the dialect (put it in series after another contact)</source>
         <translation>bu kenar ya da karşılaştırma kontağının bu PLC ailesinde bu yer için bir biçimi yok (onu başka bir kontaktan sonra seri koyun)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="108"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="106"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>çıkışlar mantığın farklı noktalarına bağlı; tek noktaya bağlayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="110"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="108"/>
         <source>only coils may follow the output of {name}</source>
         <translation>{name} çıkışından sonra yalnız çıkış (bobin) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="111"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="109"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>her devrede bir fonksiyon kutusu olur: {name} için ayrı bir devre kullanın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="114"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="112"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>({row}, {col}) hücresi ızgaranın dışında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="115"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="113"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>çıkış sütununa yalnız çıkış konur (({row}, {col}) hücresi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="117"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="115"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} buraya sığmıyor: fonksiyon kutusu iki kontak sütunu ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="119"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="117"/>
         <source>an edge or comparison contact has no normally closed form</source>
         <translation>kenar ya da karşılaştırma kontağının normalde kapalı biçimi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="121"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="119"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>({row}, {col}) hücresinde uygun eleman yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="121"/>
         <source>no function box with FO outputs at cell ({row}, {col})</source>
         <translation>({row}, {col}) hücresinde FO çıkışlı bir fonksiyon kutusu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
         <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
         <translation>programın {count} sembolünün (%@2) o ailenin dosyalarında yeri yok: program kendi ailesinde kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
         <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
         <translation>{step}. komutun ({name}) o ailede karşılığı yok: program kendi ailesinde kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>END ends the program and stays its last network: draw new networks above it</source>
         <translation>END programı bitirir ve son ağ olarak kalır: yeni ağları onun üstüne çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; programın bir adresi veya sembolü değil: değiştirmek için bir adres veya sembol yazın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} ve {replacement}: bit ile bit, bayt ile bayt değiştirilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} kendisiyle değiştirilmiş olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {other}. devrede)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
         <source>instruction after END, the end of the program</source>
         <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="10"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII biçimi: {quote} ile açılan metin hiç kapatılmamış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="12"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII biçimi: tekrar sayısı 1 ile 999 arasında olmalı, bulunan {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="14"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII biçimi: &apos;{text}&apos; bir öğe değil (&apos;metin&apos;, MX, onaltılık kodlar, &quot;w.dRn&quot;, / ya da \ bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="18"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII biçimi: &quot;{text}&quot; bir değişken değil (örneğin &quot;8.2R0&quot; ya da &quot;4R10H&quot; bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="21"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII biçimi: END&apos;den sonra metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="23"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII biçimi: END eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="24"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; bir Fatek komutu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="26"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>önünde FUN, TMR ya da CTR olmayan bir operand satırı: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="28"/>
         <source>{name} needs a device</source>
         <translation>{name} bir eleman (cihaz) adresi ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="29"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; bir Fatek elemanı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="30"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} &apos;{text}&apos; alamaz ({kinds} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="32"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; aralık dışında ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="33"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} önünde bir şey yok: ağ ORG ile başlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="35"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} iki blok ister: ikincisini LD ile başlatın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="37"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} bu ağda iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="39"/>
         <source>a network has at most {limit} TR points</source>
         <translation>bir ağda en fazla {limit} TR noktası olabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="41"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>bu ağda OUT TR{number} komutundan önce LD TR{number}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="43"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} başlangıç hattında: önüne ORG SHORT koyun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="45"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: LD ile başlayan {count} blok birleştirilmemiş (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="47"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number}, LadderWorks&apos;ün bildiği bir Fatek fonksiyonu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="49"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: {param} operand satırı eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="51"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} başka operand almaz, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="53"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos;, {param} operandı olamaz (bir kaydedici ya da sabit olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="55"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a bit device: Y0, M5 …)</source>
         <translation>&apos;{text}&apos;, {param} operandı olamaz (bir bit aygıtı olmalı: Y0, M5 …)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="57"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} korunur ve çizilir ama simüle edilmez: çıkışları 0 kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="59"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos;, {name} zaman tabanı değil ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="61"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: burada fonksiyon çıkışı yok (bir kutudan sonra FO0-FO7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="63"/>
         <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
         <translation>&apos;{text}…&apos; bir Fatek sayısı olamayacak kadar uzun: satır okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="65"/>
         <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
         <translation>WinProladder yorum dışa aktarımı değil: ilk satırı REF, COMMENT, DESCRIPTION olmalı (sekmeyle ayrılmış)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="69"/>
         <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
         <translation>&apos;{text}&apos; bir Fatek cihazı değil: satır atlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="71"/>
         <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
         <translation>yorumlar {chosen} kod sayfasında okundu; {others} olarak da okunabiliyor: adları denetleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="75"/>
         <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
         <translation>{offset}. bayt (0x{byte}) denenen hiçbir Windows kod sayfasında karakter değil: yorumlar okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="79"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII dosyaları: &apos;{text}&apos;, [R1000] gibi bir bölüm başlığı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="82"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>WinProladder projesi değil: &apos;Fatek WinProladder, File Format 1&apos; başlığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="84"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>.pdw dosyası eksik: {offset}. bayttaki kaydı dosyanın sonunu aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="86"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kaydın sağlama toplamı tutmuyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="88"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kayıt hatalı biçimde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="90"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>.pdw dosyasında program yok ({offset}. bayta kadar bakıldı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="92"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>{offset}. bayttaki programın maskesi kaldırılamıyor: maskenin çıkarılabileceği silinmiş bir bellek bloğu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="96"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>.pdw dosyası bozuk: program görüntüsü {offset}. baytta hatalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="98"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>.pdw dosyası bozuk: programın kodu sağlama toplamıyla uyuşmuyor ({offset}. bayt)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="102"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} komut kodunu LadderWorks henüz çözemiyor: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="106"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} operand kodu LadderWorks&apos;ün henüz çözebildiği bir cihaz değil: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="110"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>program {offset}. baytta bir komutun ortasında bitiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; burada {name} komutunun aygıtı olamaz: onunla satır {other} olarak okunur ({other} komutunu paletten yerleştirin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="198"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
         <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
         <translation>{name} korunur ve çizilir ama benzetilmez: tarama onu atlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
         <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
         <translation>{count} komut benzetilmez, tarama onları atlar (satır): {names}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
         <translation>INV kendinden önceki tüm enerjiyi tersler: onu baradan ya da bir dallanma noktasından gelen bir hatta çizin, paralel bir bloğun içine değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>{name}: operand {index} is missing</source>
         <translation>{name}: {index}. işlenen eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="223"/>
         <source>step {step} is not after step {previous}: the step numbers must grow</source>
         <translation>{step} adımı {previous} adımından sonra gelmiyor: adım numaraları artmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>projede program yok: derlenmiş komut listesi yok ve ladder çizimi boş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>proje derlenmeden kaydedilmiş: programı ladder çiziminden okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>proje derlenmiş bir komut listesi içermiyor ve ladder çiziminde LadderWorks&apos;ün henüz okumadığı bir hücre var (bayt {offset}: bir kol, bir kenar kontağı ...): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>NEXT without a FOR before it</source>
         <translation>Öncesinde FOR olmayan NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MCR veya RET&apos;i olmayan MC veya STL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>Öncesinde MC veya STL olmayan MCR veya RET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>FOR without its NEXT</source>
         <translation>NEXT&apos;i olmayan FOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="433"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bayt: bir değer 1, 2 veya 4 bayt olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="459"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="461"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="462"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>&apos;{text}&apos; is neither a name of the program nor an address</source>
         <translation>&apos;{text}&apos; ne programın bir adı ne de bir adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</source>
         <translation>&apos;{text}&apos; bir {type}: üyelerinden birini izleyin (ör. {text}.Q)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>&apos;{text}&apos; is a {type}: the watch table has no format for it</source>
         <translation>&apos;{text}&apos; bir {type}: izleme tablosunda bunun için bir biçim yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>&apos;{text}&apos; is not a date from D#1990-01-01 to D#2169-06-06 (e.g. D#2024-01-31)</source>
         <translation>&apos;{text}&apos; D#1990-01-01 ile D#2169-06-06 arasında bir tarih değil (ör. D#2024-01-31)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
         <source>&apos;{text}&apos; is not a time of day (e.g. TOD#12:30:00.000)</source>
         <translation>&apos;{text}&apos; bir günün saati değil (ör. TOD#12:30:00.000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
         <source>the value has {length} characters: at most {limit} are read</source>
         <translation>değer {length} karakter: en çok {limit} karakter okunur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>no modify value to write</source>
         <translation>yazılacak değiştirme değeri yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
         <translation>&apos;{text}&apos; TRUE ya da FALSE (veya 1, 0) değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
         <translation>&apos;{text}&apos; bir tam sayı değil (ör. 12, -3, 16#FF, 2#0101)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
         <translation>&apos;{text}&apos; aralığın dışında: {low} ile {high} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
         <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
         <translation>&apos;{text}&apos; bir gerçel sayı değil (ör. 1.5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="485"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
         <translation>&apos;{text}&apos; bir süre değil (ör. T#5S_300MS, T#1M30S ya da 1500 ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
         <translation>&apos;{text}&apos; Latin-1 kümesinden tek bir karakter değil (ör. &apos;A&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
         <translation>&apos;{text}&apos; bir dizenin tutamayacağı karakterler içeriyor (yalnızca Latin-1 kümesi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
         <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
         <translation>&apos;{text}&apos; dizenin {length} karakterinden uzun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
         <source>&apos;{name}&apos; is neither a map file nor a global DB of the program (its global DBs: {names})</source>
         <translation>&apos;{name}&apos; ne bir harita dosyası ne de programın bir global veri bloğu (global veri blokları: {names})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="497"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="113"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; bir S7 adresi (ör. %I0.0, %MW2, %DB1.DBW4) ya da etiket değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="115"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: {expected} bekleniyordu, &apos;{found}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="501"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="117"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: metin {what} içinde bitiyor (kesilmiş mi?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="503"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="119"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; LadderWorks&apos;ün benzettiği bir komut değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="121"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; ne bir etiket, ne bloğun bir üyesi, ne de bir adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="124"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} için {pin} ucu gerekli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="126"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: {part} bağlantıları izlenemiyor ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="512"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="128"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: bu blokta &apos;{label}&apos; etiketi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="130"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: {language} network&apos;ü gösterilir, benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="132"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: çağrılan &apos;{block}&apos; bloğu programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="134"/>
         <source>network {network}: {text} is in none of the tag tables read; LadderWorks gives it a place of its own ({type})</source>
         <translation>network {network}: {text} okunan etiket tablolarının hiçbirinde yok; LadderWorks ona kendi yerini veriyor ({type})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="137"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: &apos;{type}&apos; tipinde {part} benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="139"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: &apos;{text}&apos; için yer kalmadı (DB üyeleri ve örnekler 10000 baytı paylaşır)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="526"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="142"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>dosya {size} MB: {limit} MB üzerindeki S7 dışa aktarımları okunmaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="144"/>
         <source>tag table: {why}</source>
         <translation>etiket tablosu: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="146"/>
         <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
         <translation>network {network}, satır {row}, sütun {column}: kontağın ya da bobinin operandı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="533"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="149"/>
         <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
         <translation>network {network}, satır {row}, sütun {column}: &apos;{name}&apos; bir S7 elemanı değil (S7 paletini kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="152"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>bu değişiklik S7 bloğunun dosyasına yazılamıyor: TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="155"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, satır {line}: {expected} bekleniyordu, &apos;{found}&apos; bulundu: kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="158"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, satır {line}: metin {what} içinde bitiyor (kesilmiş mi?): kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="161"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>S7 bloğunun dosyası artık okunamıyor (satır {line}): hiçbir şey yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="547"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="163"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; S7 bloğunun dosya biçiminde yazılamıyor: bu değişikliği TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="550"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="166"/>
         <source>&apos;{text}&apos; is no S7 jump label: letters, digits and _, not starting with a digit</source>
         <translation>&apos;{text}&apos; bir S7 atlama etiketi değil: harfler, rakamlar ve _; rakamla başlamaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="553"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="169"/>
         <source>network {network} is not a complete S7 network yet (an element S7 does not have, an operand missing or still &lt;???&gt;): the S7 block&apos;s file is not written</source>
         <translation>network {network} henüz tamamlanmış bir S7 network&apos;ü değil (S7&apos;de olmayan bir eleman, eksik ya da hâlâ &lt;???&gt; olan bir operand): S7 bloğunun dosyası yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="558"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="174"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="561"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="177"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="179"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="564"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="180"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="182"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="569"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="185"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="572"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="188"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="575"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="191"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="578"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="194"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="581"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="197"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="584"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="200"/>
         <source>{block}, network {network}: access UId {uid} of scope &apos;{scope}&apos; names nothing LadderWorks reads; the parts wired to it are not simulated</source>
         <translation>{block}, network {network}: &apos;{scope}&apos; kapsamlı UId {uid} erişimi LadderWorks&apos;ün okuduğu hiçbir şeyi adlandırmıyor; ona bağlı parçalar benzetilmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="587"/>
+        <location filename="../ladderworks/core/dialect_messages.py" line="203"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>
