@@ -76,9 +76,18 @@ def _binary_code() -> object:
 _ARITHMETIC = _binary_code()  # the code every signed binary arithmetic implementation shares
 
 
+StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], str | None]
+# rows of other modules, each with its state in a block: implementation -> (kind, emitter);
+# a module adds its own dict with one `ROWS.update(module.STATEFUL)` line below
+ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
+
+
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
     """"tmr", "tmrb", "tmrbf", "codb", "xmovb" or "arithmetic" for an op done here natively,
     else None."""
+    if impl in ROWS:
+        assert impl is not None
+        return ROWS[impl][0]
     if impl is timers.tmr:
         return "tmr"
     if impl is convert.codb:
@@ -379,6 +388,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
     found = kind(spec, impl)
     block = Block(f, base, number, dirty_list, marks)
     try:
+        if impl in ROWS:
+            return ROWS[impl][1](block, impl, params, inputs)
         if found == "tmr":
             return _tmr(block, params, inputs, dialect)
         if found == "tmrb":
