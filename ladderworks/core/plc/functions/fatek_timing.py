@@ -10,6 +10,8 @@ Up/down counter FUN 7 (001:652-694): U/D = 1 up, 0 down; FO0 only while CV = PV;
 
 from __future__ import annotations
 
+from functools import cache
+
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.devices import (
     Device,
@@ -48,13 +50,12 @@ def _set(memory: Memory, device: Device, value: bool) -> None:
     memory.set_bit(bit_address(device), value)
 
 
-def _places(state: dict, kind: str, number: int) -> tuple[Device, Address, int, Address]:
-    """The device, its value's address and width, its contact: found once per call site."""
-    places = state.get("places")
-    if places is None:
-        device = Device(kind, number)
-        places = state["places"] = (device, *word_address(device), bit_address(device))
-    return places
+@cache
+def places(kind: str, number: int) -> tuple[Device, Address, int, Address]:
+    """The device, its value's address and width, its contact: found once per device (not
+    kept in the call site's state, which holds only what the native code keeps too)."""
+    device = Device(kind, number)
+    return (device, *word_address(device), bit_address(device))
 
 
 @function("FBS.TMR")
@@ -62,7 +63,7 @@ def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                 params: tuple) -> bool:
     """Timer Tn with PV a constant or a register (001:449-461)."""
     number, preset, fo = params
-    _device, cv_at, _width, contact = _places(state, "T", number)
+    _device, cv_at, _width, contact = places("T", number)
     memory = ctx.memory
     if not inputs[0]:
         state["ms"] = None
@@ -103,7 +104,7 @@ def _count_input(ctx: FunctionContext, state: dict, number: int, ck: bool, clr: 
                  fo: object) -> tuple[Device, Address, int, bool] | None:
     """What the counters share: their places, the value at the load, CK's rising edge; None
     when CLR cleared the value, the contact and FO0."""
-    device, cv_at, width, _contact = _places(state, "C", number)
+    device, cv_at, width, _contact = places("C", number)
     memory = ctx.memory
     _counter_start(memory, state, device, cv_at, width)
     rising = bool(ck) and not state.get("ck", False)

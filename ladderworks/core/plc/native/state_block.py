@@ -26,6 +26,9 @@ HAS_ELAPSED, ELAPSED_SET, HAS_AT, HAS_WAKE, HAS_ON, ON, HAS_W1, W1 = (
 HAS_ACT, ACT, HAS_VALUE = 1024, 2048, 4096  # counters: the last ACT; CTRB's value (at ELAPSED)
 HAS_PREV, PREV = 1 << 13, 1 << 14  # Delta's pulse forms: the input at the last execution
 HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "en", "fo0"
+# Fatek timers, counters, TU/TD: the elapsed value named "ms" (AS_MS: a time value as
+# "elapsed" is), "ck" (the last CK), "loaded", "before" (the edge contact's last device bit)
+AS_MS, HAS_CK, CK, HAS_LOADED, LOADED, HAS_BEFORE, BEFORE = (1 << k for k in range(20, 27))
 CHANGED = 1 << 15
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
@@ -99,6 +102,8 @@ def _held(b: Block, rst: str, act: str, compute: Callable[[], str]) -> str:
     return f.value(f"zext i1 {w1} to i8")
 
 
+_FATEK_BOOLS = (("ck", HAS_CK, CK), ("loaded", HAS_LOADED, LOADED),
+                ("before", HAS_BEFORE, BEFORE))
 _VALUES = (("elapsed", HAS_ELAPSED, ELAPSED), ("at", HAS_AT, AT), ("wake", HAS_WAKE, WAKE))
 
 
@@ -106,7 +111,8 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
     """Write a site's dict from its block."""
     flags = words[base]
     if flags & HAS_ELAPSED:
-        state["elapsed"] = _get64(words, base + ELAPSED) if flags & ELAPSED_SET else None
+        state["ms" if flags & AS_MS else "elapsed"] = \
+            _get64(words, base + ELAPSED) if flags & ELAPSED_SET else None
     if flags & HAS_AT:
         state["at"] = _get64(words, base + AT)
     if flags & HAS_WAKE:
@@ -125,6 +131,9 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
         state["fo0"] = bool(flags & FO0)
     if flags & HAS_VALUE:
         state["value"] = _get64(words, base + ELAPSED)
+    for key, has, value_bit in _FATEK_BOOLS:
+        if flags & has:
+            state[key] = bool(flags & value_bit)
 
 
 def push(words: Any, base: int, state: dict[str, Any]) -> None:
@@ -146,6 +155,14 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
     if "value" in state:
         flags |= HAS_VALUE
         _set64(words, base + ELAPSED, int(state["value"]))
+    if "ms" in state:
+        flags |= HAS_ELAPSED | AS_MS
+        if state["ms"] is not None:
+            flags |= ELAPSED_SET
+            _set64(words, base + ELAPSED, int(state["ms"]))
+    for key, has, value_bit in _FATEK_BOOLS:
+        if key in state:
+            flags |= has | (value_bit if state[key] else 0)
     words[base] = flags
 
 

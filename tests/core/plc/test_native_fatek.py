@@ -1,0 +1,116 @@
+"""Fatek rows made native (native/fatek_contacts.py, fatek_timers.py) equal their Python
+implementations exactly: a small program of the rows runs on a Python and a native engine,
+fast and monitored; before every scan hypothesis draws R0-R11, the X inputs, the scan's
+period and, now and then, the timers' and counters' present values (their limits included);
+after every scan all memory, the call sites' states and the power flow are equal, and no op
+calls back into Python (test_native_functions' helpers)."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ladderworks.core.address import Area
+from ladderworks.core.compiler import compile_program
+from ladderworks.core.compiler.binary import BinaryProgram, decode
+from ladderworks.core.dialects.fatek import DEVICES
+from ladderworks.core.il.reading import parse_bytes
+from tests.core.plc.test_native_functions import (  # noqa: F401 (the fixture is autouse)
+    DATA,
+    _byte,
+    _engines,
+    disk_cache_in_tmp,
+)
+from tests.hypothesis_profiles import examples
+
+# present values poked from the data: T0, T1, T50 (2 bytes), C0, C150 (2), C200, C201 (4)
+_VALUES = ("T0", "T1", "T50", "C0", "C150", "C200", "C201")
+_LIMITS = (b"\xff\x7f", b"\xfe\x7f", b"\x00\x80", b"\xff\xff", b"\x00\x00")
+_scan = st.tuples(st.lists(_byte, min_size=DATA, max_size=DATA), st.integers(0, 255),
+                  st.integers(0, 255), st.sampled_from((1, 7, 10, 35, 100, 999, 1000, 2500)),
+                  st.one_of(st.none(), st.sampled_from(_LIMITS), st.binary(min_size=2,
+                                                                          max_size=2)))
+_scans = st.lists(_scan, min_size=1, max_size=10)
+
+
+def _binary(text: str) -> BinaryProgram:
+    result = parse_bytes(text.encode("ascii"), "fatek")
+    assert not [d for d in result.diagnostics if d.is_error], [
+        d.located("t") for d in result.diagnostics][:3]
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None, [d.message() for d in compiled.diagnostics][:3]
+    return decode(compiled.binary)
+
+
+def _run(text: str, monitored: bool, scans: list) -> None:
+    python, native = _engines(_binary(text), monitored)
+    r0, _ = DEVICES.word("R0")
+    places = [DEVICES.word(name) for name in _VALUES]
+    for data, low, high, period, poke in scans:
+        for engine in (python, native):
+            engine.period_ms = period
+            engine.memory.areas[r0.area][r0.byte:r0.byte + DATA] = bytes(data)
+            if poke is not None:  # the PLC tables set a present value (the one data[0] says)
+                at, width = places[data[0] % len(places)]
+                engine.memory.areas[at.area][at.byte:at.byte + 2] = poke
+                if width == 4:
+                    engine.memory.areas[at.area][at.byte + 2:at.byte + 4] = poke
+            engine.memory.areas[Area.X][0] = low
+            engine.memory.areas[Area.X][1] = high
+            engine.scan()
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
+        if monitored:
+            assert native.power_flow == python.power_flow
+
+
+_SYMBOLS = ("=", ">", "<", "<>", ">=", "<=")
+PROGRAMS = {
+    # FUN 170-175 starting a rung (ORG), a block (LD, then ANDLD/ORLD) and in parallel (OR)
+    "compare": "".join(f"ORGF {170 + k}{form} ({s})\n Sa: R{k}\n Sb: {sb}\nOUT Y{k}\n"
+                       f"ORG X{k}\nLDF {170 + k} ({s})\n Sa: R{k + 1}\n Sb: R7\nORLD\n"
+                       f"ORF {170 + k}{form} ({s})\n Sa: R8\n Sb: {sb}\nOUT Y1{k}\n"
+                       for k, (s, form, sb) in enumerate(zip(
+                           _SYMBOLS, ("", "D", "", "D", "", ""),
+                           ("R1", "R10", "-1", "0", "R9", "32767"), strict=True)))
+               + "".join(f"ORGF {170 + k} ({s})\n Sa: R7\n Sb: R7\nOUT M{k}\n"
+                         for k, s in enumerate(_SYMBOLS)),  # equal: every test's boundary
+    # TU/TD in series, starting a rung, a block and in parallel; on X and on M (written by itself)
+    "edges": "ORG TU X0\nOUT Y0\nORG TD X0\nOUT Y1\nORG X1\nAND TU X2\nOUT Y2\n"
+             "ORG X3\nAND TD X2\nOUT Y3\nORG X4\nOR TU X5\nOUT Y4\nORG X6\nOR TD X5\nOUT Y5\n"
+             "ORG X7\nLD TU X10\nOR X11\nANDLD\nOUT Y6\nORG X12\nLD TD X10\nORLD\nOUT Y7\n"
+             "ORG TU M0\nOUT M0\nORG X13\nOUT M0\nORG TD M0\nOUT Y10\n",
+    # T0/T1 0.01 s, T50 0.1 s, T200 1 s; PV constants and registers; FO0 and the contacts
+    "timers": "ORG X0\nTMR T0 0.01S R0\nFO 0\nOUT Y0\nORG X1\nTMR T1 0.01S 5\nFO 0\nOUT Y1\n"
+              "ORG X2\nTMR T50 0.1S R1\nORG T50\nOUT Y2\nORG X3\nTMR T200 1S 2\nFO 0\n"
+              "OUT Y3\nORG X4\nTMR T1 0.01S 32767\nFO 0\nOUT Y4\nORG X5\nRST T0\nOUT Y5\n"
+              "ORG X6\nTMR T2 0.01S T2\nFO 0\nOUT Y6\nORG X7\nRST T50\n",
+    # CTR (16 and 32 bits, retentive or not), UDCTR on counters and a register, RST
+    "counters": "ORG X0\nLD X1\nCTR C0 R0\nFO 0\nOUT Y0\nORG X2\nLD X3\nCTR C200 R2\nFO 0\n"
+                "OUT Y1\nORG X4\nLD X5\nCTR C150 3\nFO 0\nOUT Y2\nORG X4\nLD X5\n"
+                "CTR C240 -2\nFO 0\nOUT Y3\nORG X6\nLD X7\nLD X10\nFUN 7 UDCTR\n  CV: C201\n"
+                "  PV: R4\nFO 0\nOUT Y4\nORG X11\nLD X12\nLD X13\nFUN 7 UDCTR\n  CV: R6\n"
+                "  PV: R7\nFO 0\nOUT Y5\nORG X11\nLD X13\nLD X12\nFUN 7 UDCTR\n  CV: C150\n"
+                "  PV: 1\nFO 0\nOUT Y6\nORG X14\nRST C0\nORG X15\nRST C200\nOUT Y7\n",
+}
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@pytest.mark.parametrize("rows", sorted(PROGRAMS))
+@settings(max_examples=examples(12), deadline=None)
+@given(scans=_scans)
+def test_fatek_rows_run_natively_as_in_python(rows: str, monitored: bool, scans: list) -> None:
+    _run(PROGRAMS[rows], monitored, scans)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+def test_a_timer_counts_to_its_most_and_stays_as_in_python(monitored: bool) -> None:
+    """T0 runs 400 scans of 90 ms from a present value near 32767 (its most: the wake
+    NEVER), stops, runs again; a counter counts 40 edges past its top."""
+    scans = [([0] * DATA, 1, 0, 90, b"\x00\x7f" if k == 0 else None) for k in range(400)]
+    scans += [([0] * DATA, 0, 0, 10, None), ([0] * DATA, 1, 0, 10, None)]
+    _run(PROGRAMS["timers"], monitored, scans)
+    counts = [([3] + [0] * (DATA - 1), 2 * (k % 2) | 1, 0, 10, b"\xfd\x7f" if k == 0 else None)
+              for k in range(40)]
+    _run(PROGRAMS["counters"], monitored, counts)
