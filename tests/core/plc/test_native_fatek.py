@@ -96,6 +96,76 @@ PROGRAMS = {
 }
 
 
+
+def _boxes(*boxes: str) -> str:
+    """Each box under its own EN (X0-X15; X15 the INB of those with two inputs), its FO0-FO3
+    on Y (Y0-Y3 of the first box, Y10-Y13 of the second …)."""
+    text = ""
+    for k, body in enumerate(boxes):
+        inb = "LD X15\n" if body.split()[2] in ("SHFL", "SHFR", "BITWR") else ""
+        outputs = "".join(f"FO {n}\nOUT Y{k}{n}\n" for n in range(4)) if "FO" in body else ""
+        text += f"ORG X{k}\n{inb}FUN {body.replace('FO', '').rstrip()}\n{outputs}"
+    return text
+
+
+def _fun(head: str, *operands: str, fo: bool = True) -> str:
+    return head + "".join(f"\n {operand}" for operand in operands) + (" FO" if fo else "")
+
+
+PROGRAMS.update({
+    "logic": _boxes(*(_fun(f"{n}{form} {name}", f"Sa : {sa}", f"Sb : {sb}", f"D : {d}")
+                      for (n, name), (form, sa, sb, d) in zip(
+                          ((18, "AND"), (19, "OR"), (35, "XOR"), (36, "XNR")) * 2,
+                          (("", "R0", "R1", "R20"), ("P", "R2", "255", "R21"),
+                           ("D", "R4", "R6", "R22"), ("DP", "R8", "-1", "R24"),
+                           ("", "R10", "R10", "R26"), ("D", "-2", "R0", "R28"),
+                           ("P", "0", "R11", "R30"), ("", "-32768", "R3", "R31")),
+                          strict=True))),
+    "math": _boxes(_fun("26 SQRT", "S : R0", "D : R20"), _fun("26D SQRT", "S : R2", "D : R22"),
+                   _fun("26P SQRT", "S : 32767", "D : R24"), _fun("27 NEG", "D : R3", fo=False),
+                   _fun("27D NEG", "D : R4", fo=False), _fun("28P ABS", "D : R6", fo=False),
+                   _fun("28D ABS", "D : R8", fo=False), _fun("29 EXT", "D : R10", fo=False),
+                   _fun("9 MOV/", "S : R0", "D : R25", fo=False),
+                   _fun("9D MOV/", "S : -7", "D : R26", fo=False),
+                   _fun("46 SWAP", "D : R1", fo=False), _fun("46D SWAP", "D : R5", fo=False),
+                   _fun("45 XCHG", "Da : R2", "Db : R7", fo=False),
+                   _fun("45D XCHG", "Da : R8", "Db : R9", fo=False),
+                   _fun("26D SQRT", "S : -1", "D : R28"),
+                   _fun("26 SQRT", "S : R11", "D : R11")),
+    "movers": _boxes(*(_fun(f"{n}{form} {name}", f"D : R{k}", f"N : {count}")
+                       for k, ((n, name), (form, count)) in enumerate(zip(
+                           ((51, "SHFL"), (52, "SHFR"), (53, "ROTL"), (54, "ROTR")) * 3,
+                           (("", "R11"), ("P", "1"), ("D", "R10"), ("DP", "R11"),
+                            ("D", "32"), ("", "16"), ("", "R9"), ("D", "R9"),
+                            ("", "0"), ("D", "33"), ("P", "R9"), ("D", "-1")), strict=True)))),
+    "bits": _boxes(_fun("10P TOGG", "D : Y7"), _fun("10 TOGG", "D : M5"),
+                   _fun("37 ZNCMP", "S : R0", "SU : R1", "SL : R2"),
+                   _fun("37D ZNCMP", "S : R4", "SU : 5", "SL : -5"),
+                   _fun("40 BITRD", "S : R0", "N : R9"), _fun("40D BITRD", "S : R2", "N : R10"),
+                   _fun("41 BITWR", "D : R20", "N : R9", fo=False),
+                   _fun("41D BITWR", "D : R22", "N : R10", fo=False),
+                   _fun("42 BITMV", "S : R0", "Ns : R9", "D : R24", "Nd : R10", fo=False),
+                   _fun("42D BITMV", "S : R2", "Ns : 31", "D : R26", "Nd : R11", fo=False),
+                   _fun("43 NBMV", "S : R0", "Ns : R9", "D : R28", "Nd : 3", fo=False),
+                   _fun("43DP NBMV", "S : R4", "Ns : 7", "D : R30", "Nd : R10", fo=False),
+                   _fun("44 BYMV", "S : R1", "Ns : R11", "D : R32", "Nd : R9", fo=False),
+                   _fun("44D BYMV", "S : -2", "Ns : 3", "D : R34", "Nd : R10", fo=False),
+                   _fun("40 BITRD", "S : -1", "N : 15")),
+    "nibbles": _boxes(_fun("47 UNIT", "S : R0", "N : R9", "D : R20"),
+                      _fun("47P UNIT", "S : R4", "N : 4", "D : R21"),
+                      _fun("48 DIST", "S : R1", "N : R10", "D : R22"),
+                      _fun("48P DIST", "S : -1", "N : 3", "D : R26"),
+                      _fun("20 BCD", "S : R0", "D : R30"), _fun("20D BCD", "S : R2", "D : R32"),
+                      _fun("20 BCD", "S : 9999", "D : R34"), _fun("20D BCD", "S : -1",
+                                                                  "D : R36"),
+                      _fun("21 BIN", "S : R4", "D : R38"), _fun("21D BIN", "S : R6", "D : R40"),
+                      _fun("21 BIN", "S : 4660", "D : R42"), _fun("21P BIN", "S : 43981",
+                                                                  "D : R43"),
+                      _fun("20DP BCD", "S : 99999999", "D : R44"),
+                      _fun("21D BIN", "S : -1", "D : R46")),
+})
+
+
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 @pytest.mark.parametrize("rows", sorted(PROGRAMS))
 @settings(max_examples=examples(12), deadline=None)

@@ -160,25 +160,38 @@ def emit(b: Block, impl: FunctionImpl, params: Sequence[object],
     mode = params[0]
     has_fo = prepare is not _move
     fo = params[-1] if has_fo else None
-    if has_fo and fo is not None and not (isinstance(fo, Address) and _fits(fo, 1)):
-        return None
     work = prepare(4 if mode & DOUBLE else 2, params[1:-1] if has_fo else params[1:])
     if work is None:
         return None
+    return box(b, inputs[0], mode, fo, has_fo, lambda f: (work(f), "true"))
+
+
+# a box's work as `box` runs it: (the FO bits, i1 each; an i1: they are written and FO0
+# kept, else FO and FO0 stay as they were)
+Outputs = Callable[[FunctionText], tuple[list[str], str]]
+
+
+def box(b: Block, enable: str, mode: int, fo: object, has_fo: bool,
+        work: Outputs) -> str | None:
+    """A box that runs while EN (`enable`, i8) is 1, or on its 0 -> 1 in the P form (its "en"
+    in the block); `work` its code when it runs. A box with FO (`has_fo`) writes its FO
+    byte (`fo`, or None) and keeps FO0 ("fo0", its W1 then); one without has W1 0."""
+    if has_fo and fo is not None and not (isinstance(fo, Address) and _fits(fo, 1)):
+        return None
     f = b.f
     flags = b.flags()
-    enable = f.truth(inputs[0])
+    enabled_now = f.truth(enable)
     was = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {EN}')}, 0")
-    run = f.value(f"and i1 {enable}, {f.value(f'xor i1 {was}, true')}") if mode & PULSE \
-        else enable
+    run = f.value(f"and i1 {enabled_now}, {f.value(f'xor i1 {was}, true')}") if mode & PULSE \
+        else enabled_now
     enabled = f.value(f"or i32 {f.value(f'and i32 {flags}, {~EN}')}, {HAS_EN}")
-    enabled = f.value(f"select i1 {enable}, i32 {f.value(f'or i32 {enabled}, {EN}')}, "
+    enabled = f.value(f"select i1 {enabled_now}, i32 {f.value(f'or i32 {enabled}, {EN}')}, "
                       f"i32 {enabled}")
     start = f.block
     body, done = f.label(), f.label()
     f.add(f"br i1 {run}, label %{body}, label %{done}")
     f.start(body)
-    bits = work(f)
+    bits, written = work(f)
     ran = enabled
     if has_fo:
         fo0 = bits[0]
@@ -187,9 +200,16 @@ def emit(b: Block, impl: FunctionImpl, params: Sequence[object],
             for n, bit in enumerate(bits):
                 wide = f.value(f"zext i1 {bit} to i8")
                 byte = f.value(f"or i8 {byte}, {f.value(f'shl i8 {wide}, {n}')}")
-            _store(f, fo, 1, byte)
+            if written == "true":
+                _store(f, fo, 1, byte)
+            else:
+                _, after = f.branch_if(written)
+                _store(f, fo, 1, byte)
+                f.join(after)
         kept = f.value(f"or i32 {f.value(f'and i32 {enabled}, {~FO0}')}, {HAS_FO0}")
         ran = f.value(f"select i1 {fo0}, i32 {f.value(f'or i32 {kept}, {FO0}')}, i32 {kept}")
+        if written != "true":
+            ran = f.value(f"select i1 {written}, i32 {ran}, i32 {enabled}")
     end = f.block
     f.add(f"br label %{done}")
     f.start(done)

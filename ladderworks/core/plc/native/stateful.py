@@ -39,6 +39,7 @@ from ladderworks.core.plc.native import (
     contacts,
     fatek,
     fatek_timers,
+    fatek_words,
     layout,
     rotation,
     shift,
@@ -82,6 +83,7 @@ StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], s
 # a module adds its own dict with one `ROWS.update(module.STATEFUL)` line below
 ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
 ROWS.update(fatek_timers.STATEFUL)
+ROWS.update(fatek_words.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
