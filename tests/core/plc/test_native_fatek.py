@@ -98,11 +98,14 @@ PROGRAMS = {
 
 
 def _boxes(*boxes: str) -> str:
-    """Each box under its own EN (X0-X15; X15 the INB of those with two inputs), its FO0-FO3
-    on Y (Y0-Y3 of the first box, Y10-Y13 of the second …)."""
+    """Each box under its own EN (X0-X13; X15 the second input of those with two or three
+    inputs, X14 the third), its FO0-FO3 on Y (Y0-Y3 of the first box, Y10-Y13 of the
+    second …)."""
     text = ""
     for k, body in enumerate(boxes):
-        inb = "LD X15\n" if body.split()[2] in ("SHFL", "SHFR", "BITWR") else ""
+        name = body.split()[2]
+        inb = "LD X15\n" if name in ("SHFL", "SHFR", "BITWR", "T_SHF", "T_ROT") else \
+            "LD X15\nLD X14\n" if name in ("R->T", "T->R", "T->T") else ""
         outputs = "".join(f"FO {n}\nOUT Y{k}{n}\n" for n in range(4)) if "FO" in body else ""
         text += f"ORG X{k}\n{inb}FUN {body.replace('FO', '').rstrip()}\n{outputs}"
     return text
@@ -163,6 +166,38 @@ PROGRAMS.update({
                                                                   "D : R43"),
                       _fun("20DP BCD", "S : 99999999", "D : R44"),
                       _fun("21D BIN", "S : -1", "D : R46")),
+    # tables: L a constant or R9/R10 (drawn), tables in the drawn R0-R11 or after them, at
+    # R8060 (12 registers before the area's end: L 12 fits, 13 does not)
+    "sums": _boxes(_fun("24 SUM", "Ts : R0", "L : 4", "D : R20"),
+                   _fun("24D SUM", "Ts : R0", "L : 3", "D : R22"),
+                   _fun("25 MEAN", "Ts : R0", "L : R9", "D : R24"),
+                   _fun("25D MEAN", "Ts : R2", "L : 5", "D : R26"),
+                   _fun("24 SUM", "Ts : R8060", "L : 12", "D : R28"),
+                   _fun("24 SUM", "Ts : R8060", "L : 13", "D : R29"),
+                   _fun("25P MEAN", "Ts : R3", "L : 1", "D : R30"),
+                   _fun("25 MEAN", "Ts : R1", "L : 0", "D : R31"),
+                   _fun("25 MEAN", "Ts : R0", "L : 7", "D : R3")),
+    "table moves": _boxes(_fun("103 BT_M", "Ts : R0", "Td : R20", "L : 6"),
+                          _fun("103D BT_M", "Ts : R0", "Td : R2", "L : R9"),
+                          _fun("104 T_SWP", "Ta : R0", "Tb : R300", "L : R10"),
+                          _fun("104D T_SWP", "Ta : R4", "Tb : R600", "L : 3"),
+                          _fun("107 T_FIL", "S : R0", "Td : R40", "L : 5"),
+                          _fun("107D T_FIL", "S : -1", "Td : R8060", "L : R9"),
+                          _fun("108 T_SHF", "IW : R1", "Ts : R2", "L : 4", "OW : R60"),
+                          _fun("109 T_ROT", "Ts : R5", "L : R9"),
+                          _fun("108DP T_SHF", "IW : R2", "Ts : R4", "L : 3", "OW : R70"),
+                          _fun("109D T_ROT", "Ts : R0", "L : 3"),
+                          _fun("108 T_SHF", "IW : 7", "Ts : R0", "L : 1", "OW : R80"),
+                          _fun("112 BKCMP", "Rs : R0", "Ts : R1", "L : 5", "D : R90"),
+                          _fun("112D BKCMP", "Rs : R0", "Ts : R2", "L : 2", "D : R92"),
+                          _fun("112 BKCMP", "Rs : R9", "Ts : R0", "L : R10", "D : R94")),
+    "pointers": _boxes(_fun("100 R->T", "Rs : R0", "Td : R100", "L : 4", "Pr : R110"),
+                       _fun("101 T->R", "Ts : R0", "L : 6", "Pr : R111", "Rd : R112"),
+                       _fun("102 T->T", "Ts : R0", "Td : R120", "L : 5", "Pr : R113"),
+                       _fun("100D R->T", "Rs : -5", "Td : R130", "L : 3", "Pr : R114"),
+                       _fun("101DP T->R", "Ts : R0", "L : 3", "Pr : R9", "Rd : R140"),
+                       _fun("102D T->T", "Ts : R2", "Td : R150", "L : R10", "Pr : R115"),
+                       _fun("100P R->T", "Rs : R1", "Td : R116", "L : 2", "Pr : R116")),
 })
 
 

@@ -172,10 +172,11 @@ Outputs = Callable[[FunctionText], tuple[list[str], str]]
 
 
 def box(b: Block, enable: str, mode: int, fo: object, has_fo: bool,
-        work: Outputs) -> str | None:
+        work: Outputs, also: str = "false") -> str | None:
     """A box that runs while EN (`enable`, i8) is 1, or on its 0 -> 1 in the P form (its "en"
-    in the block); `work` its code when it runs. A box with FO (`has_fo`) writes its FO
-    byte (`fo`, or None) and keeps FO0 ("fo0", its W1 then); one without has W1 0."""
+    in the block), or while `also` (i1: a pointer move's CLR) holds; `work` its code when it
+    runs. A box with FO (`has_fo`) writes its FO byte (`fo`, or None) and keeps FO0 ("fo0",
+    its W1 then); one without has W1 0."""
     if has_fo and fo is not None and not (isinstance(fo, Address) and _fits(fo, 1)):
         return None
     f = b.f
@@ -187,6 +188,8 @@ def box(b: Block, enable: str, mode: int, fo: object, has_fo: bool,
     enabled = f.value(f"or i32 {f.value(f'and i32 {flags}, {~EN}')}, {HAS_EN}")
     enabled = f.value(f"select i1 {enabled_now}, i32 {f.value(f'or i32 {enabled}, {EN}')}, "
                       f"i32 {enabled}")
+    if also != "false":
+        run = f.value(f"or i1 {run}, {also}")
     start = f.block
     body, done = f.label(), f.label()
     f.add(f"br i1 {run}, label %{body}, label %{done}")

@@ -20,7 +20,7 @@ from ladderworks.core.dialects.fatek.devices import (
 )
 from ladderworks.core.plc.functions import NEVER, REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.fatek_timing import MAX16, places
-from ladderworks.core.plc.native import fatek_contacts, layout
+from ladderworks.core.plc.native import layout
 from ladderworks.core.plc.native.builtins import Emitter
 from ladderworks.core.plc.native.fatek import _operand
 from ladderworks.core.plc.native.fatek_contacts import StatefulEmitter
@@ -298,7 +298,4 @@ def _rows() -> tuple[dict[FunctionImpl, Emitter], dict[FunctionImpl,
     return emitters, stateful
 
 
-# this module's rows and fatek_contacts' (stateful.py adds them with one line each)
-_OWN = _rows()
-EMITTERS = {**fatek_contacts.EMITTERS, **_OWN[0]}
-STATEFUL = {**fatek_contacts.STATEFUL, **_OWN[1]}
+EMITTERS, STATEFUL = _rows()

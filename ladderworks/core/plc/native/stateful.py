@@ -38,8 +38,7 @@ from ladderworks.core.plc.native import (
     builtins,
     contacts,
     fatek,
-    fatek_timers,
-    fatek_words,
+    fatek_rows,
     layout,
     rotation,
     shift,
@@ -82,8 +81,7 @@ StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], s
 # rows of other modules, each with its state in a block: implementation -> (kind, emitter);
 # a module adds its own dict with one `ROWS.update(module.STATEFUL)` line below
 ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
-ROWS.update(fatek_timers.STATEFUL)
-ROWS.update(fatek_words.STATEFUL)
+ROWS.update(fatek_rows.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
@@ -380,7 +378,7 @@ builtins.EMITTERS.update(words.EMITTERS)
 builtins.EMITTERS.update(words32.EMITTERS)
 builtins.EMITTERS.update(contacts.EMITTERS)
 builtins.EMITTERS.update(fatek.EMITTERS)
-builtins.EMITTERS.update(fatek_timers.EMITTERS)
+builtins.EMITTERS.update(fatek_rows.EMITTERS)
 words.PULSES.update(words32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
