@@ -7,6 +7,8 @@ calls back into Python (test_native_functions' helpers)."""
 
 from __future__ import annotations
 
+import random
+
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -219,3 +221,19 @@ def test_a_timer_counts_to_its_most_and_stays_as_in_python(monitored: bool) -> N
     counts = [([3] + [0] * (DATA - 1), 2 * (k % 2) | 1, 0, 10, b"\xfd\x7f" if k == 0 else None)
               for k in range(40)]
     _run(PROGRAMS["counters"], monitored, counts)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@pytest.mark.parametrize("rows", sorted(PROGRAMS))
+def test_fatek_rows_run_a_long_sequence_as_in_python(rows: str, monitored: bool) -> None:
+    """Every box enabled for runs of scans (X15 on: the pointers move on to their tables'
+    last entries; X14, CLR, off), then off, on again, cleared; small lengths and counts in
+    the data (R9, R10 drawn from 0..7) so the boxes' ordinary cases come too."""
+    draw = random.Random(rows)
+    scans = []
+    for k in range(40):
+        data = [draw.randrange(256) for _ in range(DATA)]
+        data[18:22] = [draw.randrange(8), 0, draw.randrange(8), 0]  # R9, R10
+        low, high = (0xFF, 0xBF) if k % 10 < 7 else (0, 0) if k % 10 < 9 else (0xFF, 0x40)
+        scans.append((data, low, high, 10, None))
+    _run(PROGRAMS[rows], monitored, scans)

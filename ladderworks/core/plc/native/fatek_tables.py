@@ -203,6 +203,7 @@ def _moving(shift: bool) -> Callable[[int, Sequence[object], list[str]], Work | 
     other end (T_ROT)."""
 
     def prepare(size: int, operands: Sequence[object], inputs: list[str]) -> Work | None:
+        fill_of: Read | None = None
         if shift:
             incoming, table, length, outgoing = operands
             fill_of = _operand(incoming, size)
@@ -222,7 +223,7 @@ def _moving(shift: bool) -> Callable[[int, Sequence[object], list[str]], Work | 
                 last = f.value(f"sub i64 {count}, 1")
                 out_at = f.value(f"select i1 {left}, i64 {last}, i64 0")
                 out = f.value(f"load {_i(size)}, ptr {entry(f, ts, out_at, size)}, align 1")
-                fill = f.value(f"trunc i64 {fill_of(f)} to {_i(size)}") if shift else out
+                fill = f.value(f"trunc i64 {fill_of(f)} to {_i(size)}") if fill_of else out
                 one = entry(f, ts, "1", size)
                 start = f.byte_ptr(ts.area, ts.byte)
                 target = f.value(f"select i1 {left}, ptr {one}, ptr {start}")

@@ -192,9 +192,10 @@ def _togg(size: int, operands: Sequence[object], inputs: list[str]) -> Prepared:
     (device,) = operands
     if not (isinstance(device, Address) and device.bit is not None and _fits(device, 1)):
         return None
+    bit = device.bit
 
     def work(f: FunctionText) -> tuple[list[str], str]:
-        on = f.value(f"icmp eq i8 {f.bit(device.area, device.byte, device.bit, False)}, 0")
+        on = f.value(f"icmp eq i8 {f.bit(device.area, device.byte, bit, False)}, 0")
         set_bit(f, device, on)
         return [on], "true"
 
