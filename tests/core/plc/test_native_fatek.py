@@ -1,7 +1,8 @@
 """Fatek rows made native (native/fatek_contacts.py, fatek_timers.py) equal their Python
 implementations exactly: a small program of the rows runs on a Python and a native engine,
 fast and monitored; before every scan hypothesis draws R0-R11, the X inputs, the scan's
-period and, now and then, the timers' and counters' present values (their limits included);
+period and, now and then, the timers' and counters' present values (their limits included)
+and the boxes' FO bytes;
 after every scan all memory, the call sites' states and the power flow are equal, and no op
 calls back into Python (test_native_functions' helpers)."""
 
@@ -17,6 +18,7 @@ from ladderworks.core.address import Area
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.compiler.binary import BinaryProgram, decode
 from ladderworks.core.dialects.fatek import DEVICES
+from ladderworks.core.dialects.fatek.devices import FO_AREA
 from ladderworks.core.il.reading import parse_bytes
 from tests.core.plc.test_native_functions import (  # noqa: F401 (the fixture is autouse)
     DATA,
@@ -54,6 +56,8 @@ def _run(text: str, monitored: bool, scans: list) -> None:
             engine.period_ms = period
             engine.memory.areas[r0.area][r0.byte:r0.byte + DATA] = bytes(data)
             if poke is not None:  # the PLC tables set a present value (the one data[0] says)
+                fo_area, fo_first = FO_AREA  # and the boxes' FO bytes (the data again)
+                engine.memory.areas[fo_area][fo_first:fo_first + DATA] = bytes(data)
                 at, width = places[data[0] % len(places)]
                 engine.memory.areas[at.area][at.byte:at.byte + 2] = poke
                 if width == 4:
@@ -193,6 +197,10 @@ PROGRAMS.update({
                           _fun("112 BKCMP", "Rs : R0", "Ts : R1", "L : 5", "D : R90"),
                           _fun("112D BKCMP", "Rs : R0", "Ts : R2", "L : 2", "D : R92"),
                           _fun("112 BKCMP", "Rs : R9", "Ts : R0", "L : R10", "D : R94")),
+    # kept and drawn, not simulated: FO 0 (the FO bytes drawn now and then)
+    "not simulated": "ORG X1\nLD X2\nLD X3\n"
+                     "FUN 140 HSPSO\n Ps: 0\n SR: R0\n WR: R100\n : C1\nFO 0\nOUT Y1\nFO 2\n"
+                     "OUT Y2\nORG X4\nFUN 141 MPARA\n Ps: 0\n SR: R200\nFO 1\nOUT Y3\n",
     "pointers": _boxes(_fun("100 R->T", "Rs : R0", "Td : R100", "L : 4", "Pr : R110"),
                        _fun("101 T->R", "Ts : R0", "L : 6", "Pr : R111", "Rd : R112"),
                        _fun("102 T->T", "Ts : R0", "Td : R120", "L : 5", "Pr : R113"),

@@ -6,6 +6,6 @@ from __future__ import annotations
 
 from ladderworks.core.plc.native import fatek_contacts, fatek_tables, fatek_timers, fatek_words
 
-EMITTERS = {**fatek_contacts.EMITTERS, **fatek_timers.EMITTERS}
+EMITTERS = {**fatek_contacts.EMITTERS, **fatek_timers.EMITTERS, **fatek_words.EMITTERS}
 STATEFUL = {**fatek_contacts.STATEFUL, **fatek_timers.STATEFUL, **fatek_words.STATEFUL,
             **fatek_tables.STATEFUL}

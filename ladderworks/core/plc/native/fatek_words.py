@@ -1,6 +1,7 @@
 """Fatek FBs word and bit boxes as native code (core/plc/functions/fatek_words.py,
 fatek_bits.py, fatek_convert.py): AND, OR, XOR, XNR, SQRT, NEG, ABS, EXT, SHFL, SHFR, ROTL,
-ROTR, MOV/, TOGG, ZNCMP, BITRD, BITWR, BITMV, NBMV, BYMV, XCHG, SWAP, UNIT, DIST, →BCD, →BIN.
+ROTR, MOV/, TOGG, ZNCMP, BITRD, BITWR, BITMV, NBMV, BYMV, XCHG, SWAP, UNIT, DIST, →BCD, →BIN;
+and the FUNs not simulated (HSPSO, MPARA …: FO 0, no state).
 Each runs in `fatek.box` ("en", the P form, FO and "fo0"); a row's `prepare(size, operands
 (FO left out), inputs)` gives its work, or None (the op calls back)."""
 
@@ -9,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from ladderworks.core.address import Address
+from ladderworks.core.dialects.fatek.rows import NOT_SIMULATED
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.fatek_convert import from_bcd, to_bcd
 from ladderworks.core.plc.functions.fatek_data import DOUBLE
@@ -443,5 +445,16 @@ def _rows() -> dict[FunctionImpl, tuple[bool, Prepare]]:
     return {REGISTRY[name]: row for name, row in _ROWS.items() if name in REGISTRY}
 
 
+def _not_simulated(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """A FUN kept and drawn but not simulated (HSPSO, MPARA …): its FO byte 0, W1 0."""
+    fo = params[1] if len(params) > 1 else None
+    if fo is not None and _place(fo, 1) is None:
+        return None
+    if isinstance(fo, Address):
+        _store(f, fo, 1, "0")
+    return "0"
+
+
 ROWS = _rows()
 STATEFUL = {impl: ("fatek box", emit) for impl in ROWS}
+EMITTERS = {REGISTRY[name]: _not_simulated for name in NOT_SIMULATED if name in REGISTRY}
