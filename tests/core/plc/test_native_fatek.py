@@ -110,7 +110,7 @@ def _boxes(*boxes: str) -> str:
     text = ""
     for k, body in enumerate(boxes):
         name = body.split()[2]
-        inb = "LD X15\n" if name in ("SHFL", "SHFR", "BITWR", "T_SHF", "T_ROT") else \
+        inb = "LD X15\n" if name in ("SHFL", "SHFR", "BITWR", "T_SHF", "T_ROT", "DIV48") else \
             "LD X15\nLD X14\n" if name in ("R->T", "T->R", "T->T") else ""
         outputs = "".join(f"FO {n}\nOUT Y{k}{n}\n" for n in range(4)) if "FO" in body else ""
         text += f"ORG X{k}\n{inb}FUN {body.replace('FO', '').rstrip()}\n{outputs}"
@@ -141,6 +141,10 @@ PROGRAMS.update({
                    _fun("45D XCHG", "Da : R8", "Db : R9", fo=False),
                    _fun("26D SQRT", "S : -1", "D : R28"),
                    _fun("26 SQRT", "S : R11", "D : R11")),
+    "div48": _boxes(_fun("23 DIV48", "Sa : R0", "Sb : R3", "D : R20"),
+                    _fun("23P DIV48", "Sa : R6", "Sb : R9", "D : R24"),
+                    _fun("23 DIV48", "Sa : R2", "Sb : R40", "D : R28"),
+                    _fun("23 DIV48", "Sa : R0", "Sb : R0", "D : R1")),
     "movers": _boxes(*(_fun(f"{n}{form} {name}", f"D : R{k}", f"N : {count}")
                        for k, ((n, name), (form, count)) in enumerate(zip(
                            ((51, "SHFL"), (52, "SHFR"), (53, "ROTL"), (54, "ROTR")) * 3,

@@ -1,6 +1,6 @@
 """Fatek FBs word and bit boxes as native code (core/plc/functions/fatek_words.py,
 fatek_bits.py, fatek_convert.py): AND, OR, XOR, XNR, SQRT, NEG, ABS, EXT, SHFL, SHFR, ROTL,
-ROTR, MOV/, TOGG, ZNCMP, BITRD, BITWR, BITMV, NBMV, BYMV, XCHG, SWAP, UNIT, DIST, →BCD, →BIN;
+ROTR, MOV/, TOGG, ZNCMP, BITRD, BITWR, BITMV, NBMV, BYMV, XCHG, SWAP, UNIT, DIST, →BCD, →BIN, DIV48;
 and the FUNs not simulated (HSPSO, MPARA …: FO 0, no state).
 Each runs in `fatek.box` ("en", the P form, FO and "fo0"); a row's `prepare(size, operands
 (FO left out), inputs)` gives its work, or None (the op calls back)."""
@@ -410,6 +410,34 @@ def _convert(to_code: bool) -> Prepare:
     return prepare
 
 
+def _div48(size: int, operands: Sequence[object], inputs: list[str]) -> Prepared:
+    """FUN 23 DIV48: the 48-bit Sa / Sb (U/S = 1 unsigned) in D; FO0 D=0, FO1 ERR Sb = 0."""
+    places = [_place(v, 6) for v in operands]
+    if any(p is None for p in places) or len(inputs) < 2:
+        return None
+    sa, sb, d = (p for p in places if p is not None)
+
+    def work(f: FunctionText) -> tuple[list[str], str]:
+        unsigned = f.truth(inputs[1])
+        values = []
+        for at in (sa, sb):
+            raw = _load(f, at, 6)
+            values.append(f.value(f"select i1 {unsigned}, i64 {f.value(f'zext i48 {raw} to i64')}"
+                                  f", i64 {f.value(f'sext i48 {raw} to i64')}"))
+        a, b = values
+        zero = f.value(f"icmp eq i64 {b}, 0")
+        safe = f.value(f"select i1 {zero}, i64 1, i64 {b}")
+        quotient = f.value(f"select i1 {unsigned}, i64 {f.value(f'udiv i64 {a}, {safe}')}, "
+                           f"i64 {f.value(f'sdiv i64 {a}, {safe}')}")
+        narrow = f.value(f"trunc i64 {quotient} to i48")
+        _store(f, d, 6, f.value(f"select i1 {zero}, i48 {_load(f, d, 6)}, i48 {narrow}"))
+        is_zero = f.value(f"and i1 {f.value(f'icmp eq i48 {narrow}, 0')}, "
+                          f"{f.value(f'xor i1 {zero}, true')}")
+        return [is_zero, zero], "true"
+
+    return work
+
+
 # the rows: (has FO, its last parameter; prepare)
 _ROWS: dict[str, tuple[bool, Prepare]] = {
     "FBS.AND": (True, _logic("and", False)), "FBS.OR": (True, _logic("or", False)),
@@ -424,6 +452,7 @@ _ROWS: dict[str, tuple[bool, Prepare]] = {
     "FBS.BYMV": (False, _part_move(8)), "FBS.XCHG": (False, _xchg), "FBS.SWAP": (False, _swap),
     "FBS.UNIT": (True, _nibbles(True)), "FBS.DIST": (True, _nibbles(False)),
     "FBS.BCD": (True, _convert(True)), "FBS.BIN": (True, _convert(False)),
+    "FBS.DIV48": (True, _div48),
 }
 
 
