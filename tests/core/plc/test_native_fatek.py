@@ -103,6 +103,10 @@ PROGRAMS = {
 
 
 
+_TWO = ("SHFL", "SHFR", "BITWR", "T_SHF", "T_ROT", "DIV48", "R-T_S", "QUEUE", "STACK", "SORT")
+_THREE = ("R->T", "T->R", "T->T", "T-T_C")
+
+
 def _boxes(*boxes: str) -> str:
     """Each box under its own EN (X0-X13; X15 the second input of those with two or three
     inputs, X14 the third), its FO0-FO3 on Y (Y0-Y3 of the first box, Y10-Y13 of the
@@ -110,8 +114,7 @@ def _boxes(*boxes: str) -> str:
     text = ""
     for k, body in enumerate(boxes):
         name = body.split()[2]
-        inb = "LD X15\n" if name in ("SHFL", "SHFR", "BITWR", "T_SHF", "T_ROT", "DIV48") else \
-            "LD X15\nLD X14\n" if name in ("R->T", "T->R", "T->T") else ""
+        inb = "LD X15\n" if name in _TWO else "LD X15\nLD X14\n" if name in _THREE else ""
         outputs = "".join(f"FO {n}\nOUT Y{k}{n}\n" for n in range(4)) if "FO" in body else ""
         text += f"ORG X{k}\n{inb}FUN {body.replace('FO', '').rstrip()}\n{outputs}"
     return text
@@ -205,6 +208,34 @@ PROGRAMS.update({
     "not simulated": "ORG X1\nLD X2\nLD X3\n"
                      "FUN 140 HSPSO\n Ps: 0\n SR: R0\n WR: R100\n : C1\nFO 0\nOUT Y1\nFO 2\n"
                      "OUT Y2\nORG X4\nFUN 141 MPARA\n Ps: 0\n SR: R200\nFO 1\nOUT Y3\n",
+    # searches (from the head, or after Pr), a queue and a stack, sorts, CRC16
+    "searches": _boxes(_fun("105 R-T_S", "Rs : R0", "Ts : R1", "L : 6", "Pr : R160"),
+                       _fun("105D R-T_S", "Rs : 0", "Ts : R0", "L : 5", "Pr : R161"),
+                       _fun("106 T-T_C", "Ta : R0", "Tb : R6", "L : 5", "Pr : R162"),
+                       _fun("106D T-T_C", "Ta : R0", "Tb : R2", "L : R10", "Pr : R9"),
+                       _fun("105 R-T_S", "Rs : R9", "Ts : R0", "L : R10", "Pr : R163"),
+                       _fun("110 QUEUE", "IW : R0", "QU : R170", "L : 4", "Pr : R180",
+                            "OW : R181"),
+                       _fun("111 STACK", "IW : R1", "ST : R190", "L : 3", "Pr : R200",
+                            "OW : R201"),
+                       _fun("110DP QUEUE", "IW : R2", "QU : R210", "L : 3", "Pr : R220",
+                            "OW : R222"),
+                       _fun("111D STACK", "IW : -9", "ST : R230", "L : R10", "Pr : R240",
+                            "OW : R242"),
+                       _fun("110 QUEUE", "IW : R3", "QU : R0", "L : 5", "Pr : R9", "OW : R250"),
+                       # every entry matches (D/S = 0) or none (1): the first looked at found
+                       _fun("106 T-T_C", "Ta : R0", "Tb : R0", "L : 5", "Pr : R164"),
+                       _fun("105 R-T_S", "Rs : R1", "Ts : R1", "L : 3", "Pr : R165")),
+    "sorts": _boxes(_fun("113 SORT", "S : R0", "D : R20", "L : 6"),
+                    _fun("113D SORT", "S : R0", "D : R30", "L : 3"),
+                    _fun("113 SORT", "S : R0", "D : R2", "L : R9"),
+                    _fun("113 SORT", "S : R8060", "D : R40", "L : 12"),
+                    _fun("113P SORT", "S : R4", "D : R50", "L : 128"),
+                    _fun("31 CRC16", "MD : 0", "S : R0", "N : 6", "D : R60"),
+                    _fun("31 CRC16", "MD : 0", "S : R0", "N : R9", "D : R62"),
+                    _fun("31 CRC16", "MD : 1", "S : R0", "N : 2", "D : R64"),
+                    _fun("31 CRC16", "MD : 0", "S : R8060", "N : 13", "D : R66"),
+                    _fun("31D CRC16", "MD : 0", "S : R8060", "N : 12", "D : R68")),
     "pointers": _boxes(_fun("100 R->T", "Rs : R0", "Td : R100", "L : 4", "Pr : R110"),
                        _fun("101 T->R", "Ts : R0", "L : 6", "Pr : R111", "Rd : R112"),
                        _fun("102 T->T", "Ts : R0", "Td : R120", "L : 5", "Pr : R113"),
@@ -240,11 +271,13 @@ def test_a_timer_counts_to_its_most_and_stays_as_in_python(monitored: bool) -> N
 def test_fatek_rows_run_a_long_sequence_as_in_python(rows: str, monitored: bool) -> None:
     """Every box enabled for runs of scans (X15 on: the pointers move on to their tables'
     last entries; X14, CLR, off), then off, on again, cleared; small lengths and counts in
-    the data (R9, R10 drawn from 0..7) so the boxes' ordinary cases come too."""
+    the data (R9, R10 drawn from 0..7) and, every other scan, words of 00, 01 and FF bytes
+    (equal entries: searches that find, sorts with ties) so the ordinary cases come too."""
     draw = random.Random(rows)
     scans = []
     for k in range(40):
-        data = [draw.randrange(256) for _ in range(DATA)]
+        alphabet = range(256) if k % 2 else (0, 1, 0xFF)  # equal entries too
+        data = [draw.choice(alphabet) for _ in range(DATA)]
         data[18:22] = [draw.randrange(8), 0, draw.randrange(8), 0]  # R9, R10
         low, high = (0xFF, 0xBF) if k % 10 < 7 else (0, 0) if k % 10 < 9 else (0xFF, 0x40)
         scans.append((data, low, high, 10, None))
