@@ -204,6 +204,12 @@ PROGRAMS.update({
                           _fun("112 BKCMP", "Rs : R0", "Ts : R1", "L : 5", "D : R90"),
                           _fun("112D BKCMP", "Rs : R0", "Ts : R2", "L : 2", "D : R92"),
                           _fun("112 BKCMP", "Rs : R9", "Ts : R0", "L : R10", "D : R94")),
+    # T_SWP of overlapping tables: Ta written before Tb, entry by entry
+    "swaps": _boxes(_fun("104 T_SWP", "Ta : R0", "Tb : R2", "L : 5"),
+                    _fun("104D T_SWP", "Ta : R0", "Tb : R1", "L : 3"),
+                    _fun("104 T_SWP", "Ta : R3", "Tb : R3", "L : R9"),
+                    _fun("104 T_SWP", "Ta : R6", "Tb : R4", "L : 4"),
+                    _fun("104D T_SWP", "Ta : R8060", "Tb : R8062", "L : R10")),
     # kept and drawn, not simulated: FO 0 (the FO bytes drawn now and then)
     "not simulated": "ORG X1\nLD X2\nLD X3\n"
                      "FUN 140 HSPSO\n Ps: 0\n SR: R0\n WR: R100\n : C1\nFO 0\nOUT Y1\nFO 2\n"

@@ -1,8 +1,7 @@
 """Fatek FBs table boxes as native code (core/plc/functions/fatek_tables.py,
 fatek_table_ops.py): SUM, MEAN, BT_M, T_SWP, T_FIL, T_SHF, T_ROT, BKCMP and the pointer moves
 R→T, T→R, T→T. L is read when the box runs, so a table's fit in its area is tested then
-(`fits`), its entries reached by index and loops; each runs in `fatek.box`. T_SWP whose tables
-could overlap calls back (the Python code's order of writes then decides)."""
+(`fits`), its entries reached by index and loops; each runs in `fatek.box`."""
 
 from __future__ import annotations
 
@@ -147,25 +146,43 @@ def _apart(a: Address, b: Address, size: int) -> bool:
 
 
 def _table_swap(size: int, operands: Sequence[object]) -> Work | None:
-    """FUN 104 T_SWP (Ta, Tb, L): the entries exchanged (tables that cannot overlap)."""
+    """FUN 104 T_SWP (Ta, Tb, L): the entries exchanged; tables that may overlap are read
+    whole first (into two buffers) and written entry by entry, Ta's before Tb's, as the Python
+    code does."""
     first, second, length = operands
     ta, tb, count_of = _table(first), _table(second), _operand(length, 2)
-    if ta is None or tb is None or count_of is None or not _apart(ta, tb, size):
+    if ta is None or tb is None or count_of is None:
         return None
+    apart = _apart(ta, tb, size)
 
     def work(f: FunctionText) -> tuple[list[str], str]:
         count = count_of(f)
         ok = f.value(f"and i1 {fits(f, ta, count, size)}, {fits(f, tb, count, size)}")
+        buffers: list[str] = []
 
         def swap(k: str, values: list[str]) -> list[str]:
             at_a, at_b = entry(f, ta, k, size), entry(f, tb, k, size)
-            a = f.value(f"load {_i(size)}, ptr {at_a}, align 1")
-            b = f.value(f"load {_i(size)}, ptr {at_b}, align 1")
+            if buffers:
+                offset = f.value(f"mul i64 {k}, {size}")
+                from_a, from_b = (f.value(f"getelementptr i8, ptr {buffer}, i64 {offset}")
+                                  for buffer in buffers)
+            else:
+                from_a, from_b = at_a, at_b
+            a = f.value(f"load {_i(size)}, ptr {from_a}, align 1")
+            b = f.value(f"load {_i(size)}, ptr {from_b}, align 1")
             f.add(f"store {_i(size)} {b}, ptr {at_a}, align 1")
             f.add(f"store {_i(size)} {a}, ptr {at_b}, align 1")
             return []
 
         def body() -> None:
+            if not apart:
+                total = f.value(f"mul i64 {count}, {size}")
+                for table in (ta, tb):
+                    buffer = f.tmp()
+                    f.entry.append(f"{buffer} = alloca [{MAX_LENGTH * 4} x i8]")
+                    f.add(f"call void @llvm.memmove.p0.p0.i64(ptr {buffer}, "
+                          f"ptr {f.byte_ptr(table.area, table.byte)}, i64 {total}, i1 false)")
+                    buffers.append(buffer)
             loop(f, count, swap)
 
         return _checked(f, ok, body)
