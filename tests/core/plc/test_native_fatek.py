@@ -20,6 +20,7 @@ from ladderworks.core.compiler.binary import BinaryProgram, decode
 from ladderworks.core.dialects.fatek import DEVICES
 from ladderworks.core.dialects.fatek.devices import FO_AREA
 from ladderworks.core.il.reading import parse_bytes
+from ladderworks.core.plc.engine import ScanEngine
 from tests.core.plc.test_native_functions import (  # noqa: F401 (the fixture is autouse)
     DATA,
     _byte,
@@ -288,3 +289,24 @@ def test_fatek_rows_run_a_long_sequence_as_in_python(rows: str, monitored: bool)
         low, high = (0xFF, 0xBF) if k % 10 < 7 else (0, 0) if k % 10 < 9 else (0xFF, 0x40)
         scans.append((data, low, high, 10, None))
     _run(PROGRAMS[rows], monitored, scans)
+
+
+def test_native_timers_skip_scans_as_python_runs_every_one() -> None:
+    """The skipper on native Fatek timers and counters ("ms" moved on as an elapsed time):
+    after each step of time the memory and the states equal Python's every-scan run."""
+    binary = _binary(PROGRAMS["timers"] + PROGRAMS["counters"].replace("ORG X", "ORG M"))
+    python = ScanEngine(binary, period_ms=10)
+    native = ScanEngine(binary, period_ms=10, backend="native")
+    assert native.backend_used == "native" and native._current.callbacks == []
+    python.every_scan = True
+    r0, _ = DEVICES.word("R0")
+    for low, ms in ((0x0F, 2500), (0x0F, 20_000), (0x07, 990), (0x0D, 3_000), (0, 500),
+                    (0xFF, 30_000), (0x01, 1234)):
+        for engine in (python, native):
+            engine.memory.areas[r0.area][r0.byte:r0.byte + 4] = bytes((150, 0, 40, 0))
+            engine.memory.areas[Area.X][0] = low
+            engine.step(ms)
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
+        assert native.scan_count == python.scan_count
+    assert native.skipped > 0
