@@ -12,15 +12,20 @@ from ladderworks.core.address import Address
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.fatek_data import DOUBLE
 from ladderworks.core.plc.native.fatek import _operand, box
-from ladderworks.core.plc.native.fatek_tables import _SIZES, Work, entry, fits, load, loop, store
+from ladderworks.core.plc.native.fatek_tables import (
+    _SIZES,
+    Work,
+    _i,
+    entry,
+    fits,
+    load,
+    loop,
+    store,
+)
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import Block, _fits, _load, _store
 
 Prepare = Callable[[int, Sequence[object], list[str]], Work | None]
-
-
-def _i(size: int) -> str:
-    return f"i{8 * size}"
 
 
 def _pointer(f: FunctionText, pointer: Address) -> str:

@@ -12,13 +12,13 @@ from ladderworks.core.dialects import memory_sizes
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.fatek_data import DOUBLE
 from ladderworks.core.plc.functions.fatek_tables import MAX_LENGTH
-from ladderworks.core.plc.native.fatek import _operand, box
+from ladderworks.core.plc.native.fatek import Outputs, _operand, box
 from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.state_block import Block, _fits, _load, _store
 
 _SIZES = memory_sizes()
 Read = Callable[[FunctionText], str]
-Work = Callable[[FunctionText], tuple[list[str], str]]
+Work = Outputs  # a box's code: its FO bits, and whether they are written
 
 
 def _i(size: int) -> str:
