@@ -144,7 +144,8 @@ PROGRAMS.update({
                    _fun("45 XCHG", "Da : R2", "Db : R7", fo=False),
                    _fun("45D XCHG", "Da : R8", "Db : R9", fo=False),
                    _fun("26D SQRT", "S : -1", "D : R28"),
-                   _fun("26 SQRT", "S : R11", "D : R11")),
+                   _fun("26 SQRT", "S : R11", "D : R11"),
+                   _fun("18P AND", "Sa : R0", "Sb : R1", "D : R32", fo=False)),  # no FO lines
     "div48": _boxes(_fun("23 DIV48", "Sa : R0", "Sb : R3", "D : R20"),
                     _fun("23P DIV48", "Sa : R6", "Sb : R9", "D : R24"),
                     _fun("23 DIV48", "Sa : R2", "Sb : R40", "D : R28"),
