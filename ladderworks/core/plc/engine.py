@@ -262,7 +262,7 @@ class ScanEngine:
                 native = self._current if hasattr(self._current, "skip_state") else None
                 skipper = CycleSkipper(self.memory.areas, self._current.states, self._ctx,
                                        self._clocks_split[0], self.period_ms, self.divisions,
-                                       self._clocks_split[1], native)
+                                       self._clocks_split[1], native, self._monitored)
             count = 0
             while self.now_ms < limit_ms:
                 self.scan()

@@ -484,6 +484,29 @@ def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
     assert native.skipped > 1000  # the timers ran on through skips
 
 
+def test_a_native_skip_ends_inside_a_cycle_with_its_state_put_back() -> None:
+    """A bit that flips every scan makes a cycle of two; a skip up to a clock's edge that
+    leaves one scan of a cycle puts back the state of the cycle's first scan (memory, the
+    DIFU memory and the timer's block) rather than running that scan: the scans after it
+    and the states are the Python scan's, run every scan."""
+    text = "%@3\nRD.NOT R0.0\nWRT R0.0\nRD R0.0\nDIFU 1\nWRT R0.3\nRD X0.0\n" \
+           "TMRB 1 4000\nWRT Y0.0\nRD R9091.5\nAND R0.0\nWRT R0.1\n%\n"
+    python, native = pair(binary_of(text))
+    odd = 0
+    for until in range(200, 9000, 104):
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = until // 1000 % 2
+        skipped = native.skipped
+        for engine in (python, native):
+            engine.advance(until)
+        odd += (native.skipped - skipped) % 2
+        assert native.memory.areas == python.memory.areas, until
+        assert native.call_states() == python._states
+        assert native._ctx.edges == python._ctx.edges
+    assert odd > 20  # skips of an odd number of scans: ended inside a cycle of two
+    assert native.skipped > 600
+
+
 def test_the_skippers_native_comparison_finds_time_values_only() -> None:
     """`helpers.grown` gives the blocks whose elapsed time or last scan grew; anything else
     differing (an edge memory, the flags, the wake, CTRB's value, an elapsed time not set) is
