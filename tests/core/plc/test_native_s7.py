@@ -139,7 +139,7 @@ def _converts() -> BinaryProgram:
 WORDS = (0x00000000, 0xFFFFFFFF, 0x7FFFFFFF, 0x80000000, 0x00007FFF, 0x00008000, 0x0000FFFF,
          0x7F7F80FF, 0x80000001, 0x00000001, 0x00800000, 0x00400000, 0x7F7FFFFF, 0xFF7FFFFF,
          0x7F800000, 0xFF800000, 0x7F800001, 0xFFBFFFFF, 0x7FC00000, 0xFFC00001, 0x3F800000,
-         0x7FF00000, 0x7FF40000, 0xFFF80000, 0x41200000, 0xC1200000)
+         0x7FF00000, 0x7FF40000, 0xFFF80000, 0x41200000, 0xC1200000, 20, 50, 0x00FF0001)
 _word = st.one_of(st.sampled_from(WORDS), st.integers(0, 0xFFFFFFFF)).map(
     lambda w: list(w.to_bytes(4, "big")))
 _data = st.lists(st.one_of(_word, st.lists(_byte, min_size=4, max_size=4)),
@@ -166,3 +166,91 @@ def test_every_edge_word_of_an_s7_row_runs_natively_as_in_python(row: str) -> No
     scans = [(sum((list(WORDS[(k + n) % len(WORDS)].to_bytes(4, "big")) for n in range(6)),
                []), x, x) for x in (255, 0) for k in range(len(WORDS))]
     _run(make(), False, scans, counters=False)
+
+
+def _bits_program() -> BinaryProgram:
+    """The edge rows with memory bits the data does not overwrite (D30, D31) and in the data,
+    an operand that is its own memory bit, SR and RS on data bits and kept bits."""
+    program = Program()
+    for k, name in enumerate(("S7.P", "S7.N")):
+        program.box(name, "D0.1", f"D30.{k}", inputs=(_inputs(k),))
+        program.box(name, "D1.2", f"D2.{k}", inputs=(_inputs(k + 2),))
+        program.box(name, f"D31.{k}", f"D31.{k}", inputs=(_inputs(k + 4),))
+    for k, name in enumerate(("S7.P_COIL", "S7.N_COIL")):
+        program.box(name, f"D32.{k}", f"D30.{k + 2}", inputs=(_inputs(k + 6),))
+        program.box(name, f"D33.{k}", f"D33.{k}", inputs=(_inputs(k + 8),))
+        program.box(name, f"D3.{k}", f"D30.{k + 4}", inputs=(_inputs(k + 10),))
+    for k, name in enumerate(("S7.P_TRIG", "S7.N_TRIG")):
+        program.box(name, f"D34.{k}", inputs=(_inputs(k + 12),))
+        program.box(name, f"D4.{k}", inputs=(_inputs(k + 14),))
+    for k, name in enumerate(("S7.SR", "S7.RS")):
+        program.box(name, f"D35.{k}", inputs=(_inputs(k), _inputs(k + 5)))
+        program.box(name, f"D5.{k}", inputs=(_inputs(k + 3), _inputs(k + 9)))
+    return program.binary()
+
+
+def _timers_program() -> BinaryProgram:
+    """Each timer with a constant PT (a few scans), a PT from the data, ET to a word, a bit
+    or nowhere; -(PT)- and -(RT)- on a TON's and a TP's instance."""
+    program, k = Program(), 0
+    for name in ("S7.TON", "S7.TOF", "S7.TP", "S7.TONR"):
+        for pt, et in ((30, f"D{300 + 8 * k}"), ("D0", f"D{304 + 8 * k}.3"), ("D5.2", 0),
+                       (-5, f"D{40 + 16 * k}")):
+            inputs = (_inputs(k % 16), _inputs((k + 7) % 16))[:2 if name == "S7.TONR" else 1]
+            program.box(name, f"D{40 + 16 * k}", pt, et, inputs=inputs)
+            k += 1
+    program.box("S7.PT", "D40", "D4", inputs=("X1.6",))
+    program.box("S7.PT", "D72", 20, inputs=("X1.7",))
+    program.box("S7.RT", "D88", inputs=("X1.5",))
+    program.box("S7.RT", "D136", inputs=("X1.4",))
+    return program.binary()
+
+
+def _counters_program() -> BinaryProgram:
+    """CTU, CTD and CTUD of every integer type, PV a constant or from the data, CV to a
+    word, a bit address's byte or nowhere, CTUD's QD to a bit or nowhere."""
+    program, k = Program(), 0
+    for vtype in INTEGERS:
+        for pv, cv in ((3, f"D{600 + 8 * k}"), ("D8", f"D{604 + 8 * k}.1"), ("D2.5", 0)):
+            base = 40 + 12 * k
+            program.box("S7.CTU", f"D{base}", int(vtype), pv, cv,
+                        inputs=(_inputs(k % 16), _inputs((k + 3) % 16)))
+            program.box("S7.CTD", f"D{base + 400}", int(vtype), pv, cv,
+                        inputs=(_inputs((k + 1) % 16), _inputs((k + 5) % 16)))
+            program.box("S7.CTUD", f"D{base + 800}", int(vtype), pv, cv,
+                        f"D{1300 + k}.2" if k % 2 else 0,
+                        inputs=tuple(_inputs((k + n) % 16) for n in (0, 1, 9, 13)))
+            k += 1
+    return program.binary()
+
+
+STATEFUL = {"bits": _bits_program, "timers": _timers_program, "counters": _counters_program}
+# each scan: the data (D0-D23), the inputs held for 1-4 scans, and now and then bytes written
+# over the instances (D40-D1400: anything a program might leave there)
+STATEFUL_SCANS = st.lists(st.tuples(_data, st.integers(0, 255), st.integers(0, 255),
+                                    st.integers(1, 4),
+                                    st.one_of(st.none(), st.tuples(st.integers(40, 1400),
+                                                                   _word))),
+                          min_size=1, max_size=8)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@pytest.mark.parametrize("rows", sorted(STATEFUL))
+@settings(max_examples=examples(10), deadline=None)
+@given(scans=STATEFUL_SCANS)
+def test_s7_bits_timers_and_counters_run_natively_as_in_python(rows: str, monitored: bool,
+                                                                scans: list) -> None:
+    python, native = _engines(STATEFUL[rows](), monitored)
+    for data, low, high, repeat, scramble in scans:
+        for engine in (python, native):
+            engine.memory.areas[Area.D][:DATA] = bytes(data)
+            if scramble is not None:
+                engine.memory.areas[Area.D][scramble[0]:scramble[0] + 4] = bytes(scramble[1])
+            engine.memory.areas[Area.X][0:2] = bytes((low, high))
+            for _ in range(repeat):
+                engine.scan()
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
+        assert native._ctx.wake_ms == python._ctx.wake_ms
+        if monitored:
+            assert native.power_flow == python.power_flow

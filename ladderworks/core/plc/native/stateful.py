@@ -40,6 +40,8 @@ from ladderworks.core.plc.native import (
     fatek,
     layout,
     rotation,
+    s7_bits,
+    s7_timers,
     s7_values,
     shift,
     words,
@@ -82,6 +84,8 @@ StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], s
 # a module adds its own dict with one `ROWS.update(module.STATEFUL)` line below
 ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
 ROWS.update(s7_values.STATEFUL)
+ROWS.update(s7_bits.STATEFUL)
+ROWS.update(s7_timers.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
