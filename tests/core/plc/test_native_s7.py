@@ -254,3 +254,86 @@ def test_s7_bits_timers_and_counters_run_natively_as_in_python(rows: str, monito
         assert native._ctx.wake_ms == python._ctx.wake_ms
         if monitored:
             assert native.power_flow == python.power_flow
+
+
+# the PMC's last four: BYT, CNV/RW, RST and ACT on X0.0-3 / X0.4-7 / X1.0-3 (address operands
+# in the data; tables in the data and past it, one reaching the end of the D area)
+PMC_ROWS = {
+    "DCNV": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nDCNV D0 D30\nWRT Y0.0\n"
+            "RD X0.4\nRD.STK X0.5\nRD.STK X0.6\nRD.STK X0.7\nDCNV D2 D2\nWRT Y0.1\n"
+            "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nDCNV D4 D32\nWRT Y0.2\n",
+    "DSCH": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nDSCH 8 D4 D0 D30\nWRT Y0.0\n"
+            "RD X0.4\nRD.STK X0.5\nRD.STK X0.6\nDSCH 150 D2 D1 D32\nWRT Y0.1\n"
+            "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nDSCH 20 D9990 D3 D34\nWRT Y0.2\n",
+    "DSCHB": "RD X0.1\nRD.STK X0.2\nDSCHB 1 D36 D4 D0 D40\nWRT Y0.0\n"
+             "RD X0.5\nRD.STK X0.6\nDSCHB 2 D36 D2 D1 D44\nWRT Y0.1\n"
+             "RD X1.1\nRD.STK X1.2\nDSCHB 4 D48 D9980 D3 D52\nWRT Y0.2\n",
+    "XMOV": "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nXMOV 6 D8 D0 D2\nWRT Y0.0\n"
+            "RD X0.4\nRD.STK X0.5\nRD.STK X0.6\nRD.STK X0.7\nXMOV 120 D4 D30 D6\nWRT Y0.1\n"
+            "RD X1.0\nRD.STK X1.1\nRD.STK X1.2\nRD.STK X1.3\nXMOV 30 D9980 D32 D1\nWRT Y0.2\n",
+}
+_SIZES = st.sampled_from((0, 1, 3, 7, 200, 30, -1, (1 << 31) - 1))
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@pytest.mark.parametrize("row", sorted(PMC_ROWS))
+@settings(max_examples=examples(15), deadline=None)
+@given(scans=st.lists(st.tuples(st.lists(_byte, min_size=DATA, max_size=DATA),
+                                st.integers(0, 255), st.integers(0, 255), _SIZES,
+                                st.lists(_byte, min_size=20, max_size=20)),
+                      min_size=1, max_size=8))
+def test_a_pmc_search_row_runs_natively_as_in_python(row: str, monitored: bool,
+                                                     scans: list) -> None:
+    """The data D0-D23 (a search's data equal to a table entry now and then), DSCHB's sizes
+    at D36 and D48, the last 20 bytes of the D area."""
+    python, native = _engines(_pmc(PMC_ROWS[row]), monitored)
+    for data, low, high, size, tail in scans:
+        data = list(data)
+        data[0:2] = data[4 + 2 * (low % 4):6 + 2 * (low % 4)] if high & 1 else data[0:2]
+        for engine in (python, native):
+            d = engine.memory.areas[Area.D]
+            d[:DATA] = bytes(data)
+            d[36:40] = d[48:52] = size.to_bytes(4, "little", signed=True)
+            d[9980:10000] = bytes(tail)
+            engine.memory.areas[Area.X][0:2] = bytes((low, high))
+            engine.scan()
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
+        if monitored:
+            assert native.power_flow == python.power_flow
+
+
+_EDGE_ROWS = "".join(
+    f"RD X0.0\nRD.STK X0.2\nRD.STK X0.3\nDSCH {n} D1000 D0 D{200 + 2 * k}\nWRT Y{k}.0\n"
+    f"RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nXMOV {n} D1000 D{300 + 2 * k} D2\n"
+    f"WRT Y{k}.1\n" for k, n in enumerate((1, 2, 3, 4, 99, 100, 101, 200))) + \
+    "RD X0.2\nRD.STK X0.3\nDSCHB 1 D36 D1000 D0 D40\nWRT Y10.0\n" \
+    "RD X0.2\nRD.STK X0.3\nDSCHB 2 D36 D1000 D0 D44\nWRT Y10.1\n" \
+    "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nDCNV D4 D50\nWRT Y10.2\n"
+_PLACES = (0, 1, 2, 3, 4, 5, 98, 99, 100, 101, 102, 199, 200, 201)
+_CONVERTED = (0, 9, 0x0A, 0x99, 0x9A, 99, 100, 255, 0x9999, 0x999A, 9999, 10000, 0xA000, 0xFFFF)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+def test_pmc_searches_at_their_bounds_run_natively_as_in_python(monitored: bool) -> None:
+    """A match in each place about each table size (and the BCD index's 99/100 and 9999
+    limits), every BYT and RW/CNV; DCNV of each digit and size limit."""
+    python, native = _engines(_pmc(_EDGE_ROWS), monitored)
+    table = bytes((7 * k + 3) % 256 for k in range(512))  # distinct bytes and byte pairs
+    for engine in (python, native):
+        engine.memory.areas[Area.D][1000:1512] = table
+    for place, converted in zip(_PLACES, _CONVERTED, strict=True):
+        for x in range(16):
+            width = 2 if x & 1 else 1
+            for engine in (python, native):
+                d = engine.memory.areas[Area.D]
+                d[0:2] = table[place * width:place * width + 2]
+                d[2:4] = int(str(place % 10 ** (2 * width)), 16).to_bytes(2, "little")
+                d[4:6] = converted.to_bytes(2, "little")
+                d[36:40] = (place - x % 3).to_bytes(4, "little", signed=True)
+                engine.memory.areas[Area.X][0] = x | 8
+                engine.scan()
+            assert native.memory.areas == python.memory.areas
+            assert native.call_states() == python.call_states()
+            if monitored:
+                assert native.power_flow == python.power_flow

@@ -43,6 +43,7 @@ from ladderworks.core.plc.native import (
     s7_bits,
     s7_timers,
     s7_values,
+    search,
     shift,
     words,
     words32,
@@ -86,6 +87,7 @@ ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
 ROWS.update(s7_values.STATEFUL)
 ROWS.update(s7_bits.STATEFUL)
 ROWS.update(s7_timers.STATEFUL)
+ROWS.update(search.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
