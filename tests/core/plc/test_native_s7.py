@@ -143,7 +143,8 @@ WORDS = (0x00000000, 0xFFFFFFFF, 0x7FFFFFFF, 0x80000000, 0x00007FFF, 0x00008000,
 _word = st.one_of(st.sampled_from(WORDS), st.integers(0, 0xFFFFFFFF)).map(
     lambda w: list(w.to_bytes(4, "big")))
 _data = st.lists(st.one_of(_word, st.lists(_byte, min_size=4, max_size=4)),
-                 min_size=DATA // 4, max_size=DATA // 4).map(lambda words: sum(words, []))
+                 min_size=DATA // 4, max_size=DATA // 4).map(
+    lambda words: b"".join(map(bytes, words)))
 SCANS = st.lists(st.tuples(_data, st.integers(0, 255), st.integers(0, 255)),
                  min_size=1, max_size=6)
 
@@ -163,8 +164,8 @@ def test_every_edge_word_of_an_s7_row_runs_natively_as_in_python(row: str) -> No
     """Each of WORDS in each operand place (rotated), every input on and then off."""
     make = ROWS[row]
     assert callable(make)
-    scans = [(sum((list(WORDS[(k + n) % len(WORDS)].to_bytes(4, "big")) for n in range(6)),
-               []), x, x) for x in (255, 0) for k in range(len(WORDS))]
+    scans = [(b"".join(WORDS[(k + n) % len(WORDS)].to_bytes(4, "big") for n in range(6)), x, x)
+             for x in (255, 0) for k in range(len(WORDS))]
     _run(make(), False, scans, counters=False)
 
 

@@ -80,6 +80,15 @@ class _Timer:
         start = f.value(f"zext i32 {load(f, self.at(12), 4)} to i64")
         return f.value(f"and i64 {f.value(f'sub i64 {self.now()}, {start}')}, 4294967295")
 
+    def restart(self, when: str, pt_operand: object) -> None:
+        """When the i1 `when`: the start := now, PT := the PT operand (read after the start)."""
+
+        def body() -> None:
+            self.start()
+            self.put(0, self.pt_of(pt_operand))
+
+        _when(self.f, self.f.value(f"zext i1 {when} to i8"), body)
+
     def pt_of(self, operand: object) -> str:
         """`s7_timers._pt`: the Time operand, negative as 0."""
         value = read_int(self.f, operand, VT.TIME)
@@ -152,7 +161,7 @@ def _ton(b: Block, impl: FunctionImpl, params: Sequence[object],
     was = t.flag(IN)
     t.set_flag(IN, signal)
     starts = f.value(f"and i1 {signal}, {f.value(f'xor i1 {was}, true')}")
-    _when(f, f.value(f"zext i1 {starts} to i8"), lambda: (t.start(), t.put(0, t.pt_of(params[1]))))
+    t.restart(starts, params[1])
     pt, et = t.capped()
     q = f.value(f"and i1 {signal}, {f.value(f'icmp sge i64 {et}, {pt}')}")
     running = f.value(f"and i1 {signal}, {f.value(f'icmp slt i64 {et}, {pt}')}")
@@ -170,7 +179,7 @@ def _tof(b: Block, impl: FunctionImpl, params: Sequence[object],
     t.set_flag(IN, signal)
     off = f.value(f"xor i1 {signal}, true")
     falls = f.value(f"and i1 {off}, {was}")
-    _when(f, f.value(f"zext i1 {falls} to i8"), lambda: (t.start(), t.put(0, t.pt_of(params[1]))))
+    t.restart(falls, params[1])
     idle = f.value(f"or i1 {t.flag(RU)}, {t.flag(Q)}")
     before_off = f.value(f"and i1 {off}, {f.value(f'xor i1 {was}, true')}")
     resting = f.value(f"and i1 {before_off}, {f.value(f'xor i1 {idle}, true')}")  # ET kept
@@ -196,7 +205,7 @@ def _tp(b: Block, impl: FunctionImpl, params: Sequence[object],
     pulsing = t.flag(RU)
     rises = f.value(f"and i1 {signal}, {f.value(f'xor i1 {was}, true')}")
     starts = f.value(f"and i1 {f.value(f'xor i1 {pulsing}, true')}, {rises}")
-    _when(f, f.value(f"zext i1 {starts} to i8"), lambda: (t.start(), t.put(0, t.pt_of(params[1]))))
+    t.restart(starts, params[1])
     timed = f.value(f"or i1 {pulsing}, {starts}")
     kept = t.get(4)
     pt, et = t.capped()
@@ -235,7 +244,12 @@ def _load_time(b: Block, impl: FunctionImpl, params: Sequence[object],
         return None
     assert isinstance(params[0], Address)
     t = _Timer(b, params[0])
-    _when(b.f, inputs[0], lambda: (t.bound(), t.put(0, t.pt_of(params[1]))))
+
+    def body() -> None:
+        t.bound()
+        t.put(0, t.pt_of(params[1]))
+
+    _when(b.f, inputs[0], body)
     return inputs[0]
 
 
@@ -246,8 +260,14 @@ def _reset_timer(b: Block, impl: FunctionImpl, params: Sequence[object],
         return None
     assert isinstance(params[0], Address)
     t = _Timer(b, params[0])
-    _when(b.f, inputs[0], lambda: (t.bound(), t.put(4, "0"), t.set_flag(Q, "false"),
-                                   t.start()))
+
+    def body() -> None:
+        t.bound()
+        t.put(4, "0")
+        t.set_flag(Q, "false")
+        t.start()
+
+    _when(b.f, inputs[0], body)
     return inputs[0]
 
 

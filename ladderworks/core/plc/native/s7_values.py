@@ -187,7 +187,7 @@ def _valid(invalid: bool) -> Emitter:
             return None
         operand, f = params[0], b.f
         if not isinstance(operand, Address) or operand.bit is not None:  # known now
-            value = 0.0 if isinstance(operand, Address) else typed.bits_real(operand)
+            value = typed.bits_real(operand) if isinstance(operand, int) else 0.0
             return inputs[0] if typed.valid_real(value) != invalid else "0"
         raw = load(f, operand, 4)
         exponent = f.value(f"and i32 {raw}, 2139095040")  # 0x7F800000
