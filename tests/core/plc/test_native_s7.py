@@ -69,23 +69,25 @@ def _inputs(k: int) -> str:
     return f"X{k // 8}.{k % 8}"
 
 
-def _typed_boxes(name: str, operands: tuple[tuple[object, ...], ...],
+def _typed_boxes(names: tuple[str, ...], operands: tuple[tuple[object, ...], ...],
                  types: tuple[VT, ...] = (*INTEGERS, VT.REAL, VT.LREAL)) -> BinaryProgram:
-    """`name` of every type with each operand tuple, each under its own input bit."""
+    """Each of `names` of every type with each operand tuple, each under its own input bit,
+    with targets (D32 and on) of its own."""
     program, k = Program(), 0
-    for t, vtype in enumerate(types):
-        for params in operands:
-            program.box(name, int(vtype), *(_own(p, t) for p in params),
-                        inputs=(_inputs(k % 16),))
-            k += 1
+    for n, name in enumerate(names):
+        for t, vtype in enumerate(types):
+            for params in operands:
+                program.box(name, int(vtype), *(_own(p, 100 * t + 1500 * n) for p in params),
+                            inputs=(_inputs(k % 16),))
+                k += 1
     return program.binary()
 
 
-def _own(param: object, t: int) -> object:
-    """A target (D32 and on) of its own for each type `t`; the data (D0-D23) shared."""
+def _own(param: object, shift: int) -> object:
+    """A target (D32 and on) moved by `shift`; the data (D0-D23) shared."""
     if isinstance(param, str) and at(param).byte >= 32:
         place = at(param)
-        return f"D{place.byte + 100 * t}" + (f".{place.bit}" if place.bit is not None else "")
+        return f"D{place.byte + shift}" + (f".{place.bit}" if place.bit is not None else "")
     return param
 
 
@@ -94,30 +96,27 @@ _PAIRS = (("D0", "D8"), ("D4", "D4"), ("D12", 0), ("D2", -1), ("D0.3", "D16"),
           (5, "D20"), ("D16", 2139095040))  # 2139095040: a Real's +infinity
 
 ROWS: dict[str, object] = {
-    **{name: lambda name=name: _typed_boxes(name, _PAIRS) for name in COMPARES},
-    "S7.IN_RANGE": lambda: _typed_boxes("S7.IN_RANGE", (("D0", "D8", "D16"), (-5, "D4", 70),
-                                                        ("D8", "D8.1", "D12"))),
-    "S7.OUT_RANGE": lambda: _typed_boxes("S7.OUT_RANGE", (("D0", "D8", "D16"),
-                                                          (-5, "D4", 70))),
-    "S7.OK": lambda: _oks("S7.OK"),
-    "S7.NOT_OK": lambda: _oks("S7.NOT_OK"),
-    "S7.MOVE": lambda: _typed_boxes("S7.MOVE", (("D0", "D32"), ("D4", "D44.2"), (-7, "D56"),
+    "compares": lambda: _typed_boxes(COMPARES, _PAIRS),
+    "ranges": lambda: _typed_boxes(("S7.IN_RANGE", "S7.OUT_RANGE"), (
+        ("D0", "D8", "D16"), (-5, "D4", 70), ("D8", "D8.1", "D12"))),
+    "OK, NOT_OK": lambda: _oks(),
+    "MOVE": lambda: _typed_boxes(("S7.MOVE",), (("D0", "D32"), ("D4", "D44.2"), (-7, "D56"),
                                                 (2143289345, "D68"), ("D9.5", "D80"))),
-    **{name: lambda name=name: _typed_boxes(  # type: ignore[misc]
-        name, (("D0", "D8", "D32"), ("D4", 1, "D44"), ("D12", "D12", "D56.3"),
-               (-32768, "D16", "D68"), ("D8", 0, "D80"), ("D20", -1, "D92")), INTEGERS)
-       for name in ("S7.ADD", "S7.SUB", "S7.MUL", "S7.DIV")},
-    "S7.INC": lambda: _typed_boxes("S7.INC", (("D0",), ("D8",), ("D17.4",)), INTEGERS),
-    "S7.DEC": lambda: _typed_boxes("S7.DEC", (("D0",), ("D8",), ("D17.4",)), INTEGERS),
-    "S7.CONVERT": lambda: _converts(),
+    "arithmetic": lambda: _typed_boxes(("S7.ADD", "S7.SUB", "S7.MUL", "S7.DIV"), (
+        ("D0", "D8", "D32"), ("D4", 1, "D44"), ("D12", "D12", "D56.3"),
+        (-32768, "D16", "D68"), ("D8", 0, "D80"), ("D20", -1, "D92")), INTEGERS),
+    "INC, DEC": lambda: _typed_boxes(("S7.INC", "S7.DEC"), (("D0",), ("D8",), ("D17.4",)),
+                                     INTEGERS),
+    "CONVERT": lambda: _converts(),
 }
 
 
-def _oks(name: str) -> BinaryProgram:
+def _oks() -> BinaryProgram:
     program = Program()
-    for k, operand in enumerate(("D0", "D4", "D8", "D12", "D16", "D20", "D1.1", 2139095040,
-                                 1, 0, -8388608)):
-        program.box(name, operand, inputs=(_inputs(k),))
+    for name in ("S7.OK", "S7.NOT_OK"):
+        for k, operand in enumerate(("D0", "D4", "D8", "D12", "D16", "D20", "D1.1", 2139095040,
+                                     1, 0, -8388608)):
+            program.box(name, operand, inputs=(_inputs(k),))
     return program.binary()
 
 
