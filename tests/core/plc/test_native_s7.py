@@ -8,6 +8,7 @@ calls back into Python (test_native_functions.py's helpers)."""
 
 from __future__ import annotations
 
+import random
 from pathlib import Path
 
 import pytest
@@ -15,10 +16,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderworks.core.address import Address, Area
-from ladderworks.core.compiler.binary import BinaryProgram, Op, SourcePosition
+from ladderworks.core.compiler import compile_program
+from ladderworks.core.compiler.binary import BinaryProgram, Op, SourcePosition, decode
+from ladderworks.core.il import parse_file
 from ladderworks.core.plc import typed
+from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.native import disk_cache
 from tests.core.plc.test_native_functions import DATA, _byte, _engines, _pmc, _run
+from tests.core.plc.test_skipping import Driver, bytes_of, program_inputs
 from tests.hypothesis_profiles import examples
 
 VT = typed.ValueType
@@ -337,3 +342,46 @@ def test_pmc_searches_at_their_bounds_run_natively_as_in_python(monitored: bool)
             assert native.call_states() == python.call_states()
             if monitored:
                 assert native.power_flow == python.power_flow
+
+
+S7_EXAMPLES = sorted((Path(__file__).resolve().parents[3] / "resources" / "examples").glob(
+    "s7*/*/*.s7dcl")) + sorted((Path(__file__).resolve().parents[3] / "resources" /
+                                "examples").glob("s7-xml/*/*.xml"))
+
+
+# the timers example writes its TON's ET into %MD0, over the clock and system memory bytes
+# (MB0, MB1) the dialect sets before each scan: after skipped scans those bytes hold what the
+# clocks say then, not what the last scan left (the skipper's, in Python as natively)
+_WRITES_THE_CLOCK_BYTES = {"timers"}
+
+
+@pytest.mark.parametrize("skipping", [False, True], ids=["every scan, monitored", "skipping"])
+@pytest.mark.parametrize("path", [p for p in S7_EXAMPLES if p.suffix == ".s7dcl"],
+                         ids=lambda p: p.parent.name)
+def test_every_s7_example_runs_natively_as_in_python(path: Path, skipping: bool) -> None:
+    """A Python engine running every scan and a native one running every scan (monitored)
+    or skipping scans (its timer wakes and states read from its state words): the same
+    memory, states and scans after every run (test_skipping's Driver)."""
+    compiled = compile_program(parse_file(path).program)
+    assert compiled.binary is not None
+    _same_when_driven(decode(compiled.binary), path.parent.name,
+                      skipping and path.parent.name not in _WRITES_THE_CLOCK_BYTES)
+
+
+@pytest.mark.parametrize("rows", ["timers", "counters", "bits"])
+def test_s7_timers_and_counters_skipping_scans_natively_as_python_every_scan(rows: str) -> None:
+    _same_when_driven(STATEFUL[rows](), rows, True)
+
+
+def _same_when_driven(binary: BinaryProgram, seed: str, skipping: bool) -> None:
+    engines = (ScanEngine(binary, monitored=not skipping),
+               ScanEngine(binary, monitored=not skipping, backend="native"))
+    assert engines[1].backend_used == "native" and engines[1]._current.callbacks == []
+    engines[0].every_scan, engines[1].every_scan = True, not skipping
+    inputs, used, coils = program_inputs(binary)
+    driver = Driver(engines, random.Random(seed), inputs or bytes_of(Area.X, 2),
+                    used, coils[:4])
+    driver.run(1000, rate=0.1)
+    for engine in engines:
+        engine.cold_start()
+    driver.run(300, rate=0.2)
