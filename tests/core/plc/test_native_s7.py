@@ -125,15 +125,29 @@ def _oks() -> BinaryProgram:
     return program.binary()
 
 
+def _signed32(value: object) -> object:
+    return value - (1 << 32) if isinstance(value, int) and value >= 1 << 31 else value
+
+
 def _converts() -> BinaryProgram:
     program, k = Program(), 0
-    for source in INTEGERS:
+    for source in (*INTEGERS, VT.REAL):
         for target in (*INTEGERS, VT.REAL, VT.LREAL):
             program.box("S7.CONVERT", int(source), int(target), f"D{k % 20}", f"D{32 + 8 * k}",
                         inputs=(_inputs(k % 16),))
             k += 1
     for k, target in enumerate((VT.INT, VT.REAL, VT.LREAL)):
         program.box("S7.CONVERT", int(VT.DINT), int(target), -(1 << 31) + k, "D3.1",
+                    inputs=(_inputs(k),))
+    for k, (source, target, operand, out) in enumerate((  # Real constants, bits, a Real's bit
+            (VT.REAL, VT.DINT, 0x4F000000, "D3000"), (VT.REAL, VT.INT, 0x3FC00000, "D3004"),
+            (VT.REAL, VT.SINT, 0x40200000, "D3008"), (VT.REAL, VT.UINT, 0xBF000001, "D3012"),
+            (VT.REAL, VT.INT, 0x7FC00000, "D3016"), (VT.REAL, VT.REAL, 0x7F800001, "D3020"),
+            (VT.REAL, VT.LREAL, 0xFF800001, "D3024"), (VT.REAL, VT.DINT, 0x5F000000, "D3032"),
+            (VT.REAL, VT.DINT, "D1.3", "D3036"), (VT.REAL, VT.LREAL, "D2.6", "D3040"),
+            (VT.REAL, VT.WORD, "D4", "D3050.2"), (VT.REAL, VT.LREAL, "D8", "D3051.5"),
+            (VT.REAL, VT.DINT, 0x3F000000, "D3052.1"), (VT.REAL, VT.INT, 0x3F800000, "D3054"))):
+        program.box("S7.CONVERT", int(source), int(target), _signed32(operand), out,
                     inputs=(_inputs(k),))
     return program.binary()
 
@@ -143,7 +157,8 @@ def _converts() -> BinaryProgram:
 WORDS = (0x00000000, 0xFFFFFFFF, 0x7FFFFFFF, 0x80000000, 0x00007FFF, 0x00008000, 0x0000FFFF,
          0x7F7F80FF, 0x80000001, 0x00000001, 0x00800000, 0x00400000, 0x7F7FFFFF, 0xFF7FFFFF,
          0x7F800000, 0xFF800000, 0x7F800001, 0xFFBFFFFF, 0x7FC00000, 0xFFC00001, 0x3F800000,
-         0x7FF00000, 0x7FF40000, 0xFFF80000, 0x41200000, 0xC1200000, 20, 50, 0x00FF0001)
+         0x7FF00000, 0x7FF40000, 0xFFF80000, 0x41200000, 0xC1200000, 20, 50, 0x00FF0001,
+         0x40200000, 0x3FC00000, 0xBF000000, 0x5F000000, 0x4F000000, 0xCF000000, 0x4B7FFFFF)
 _word = st.one_of(st.sampled_from(WORDS), st.integers(0, 0xFFFFFFFF)).map(
     lambda w: list(w.to_bytes(4, "big")))
 _data = st.lists(st.one_of(_word, st.lists(_byte, min_size=4, max_size=4)),

@@ -1,13 +1,13 @@
 """S7-1200's typed values as native code (core/plc/typed.py): big-endian loads and stores
 (llvm.bswap), and the stateless rows on them: the comparisons, IN_RANGE/OUT_RANGE, OK/NOT_OK,
-MOVE, ADD/SUB/MUL/DIV, INC/DEC and CONVERT (core/plc/functions/s7_compare.py, s7_math.py).
+MOVE, ADD/SUB/MUL/DIV, INC/DEC (core/plc/functions/s7_compare.py, s7_math.py; CONVERT in
+s7_convert.py).
 
 Integers are worked in i64 (ADD/SUB/MUL in i128: UDInt × UDInt needs 64 bits unsigned), so
 every result is Python's exactly before it is wrapped to its type. Real and LReal: the
 comparisons and IN_RANGE (in double: a Real widened is exact), OK/NOT_OK (on the bits), MOVE
 (the bits; a Real read and written again by Python's struct is a signalling NaN made quiet,
-done here on the bits) and CONVERT of an integer to Real/LReal (one rounding, as Python's);
-arithmetic on them and CONVERT from them call back. A row runs natively only in a program
+done here on the bits); arithmetic on them calls back. A row runs natively only in a program
 whose memory is big-endian (the S7 dialect), with its type known and its data inside memory.
 """
 
@@ -203,7 +203,7 @@ def _valid(invalid: bool) -> Emitter:
     return emit
 
 
-def _float_bits(f: FunctionText, operand: object, vtype: VT) -> str:
+def float_bits(f: FunctionText, operand: object, vtype: VT) -> str:
     """The bits `typed.write` stores for a Real/LReal `typed.read` gave (i32 or i64): a
     Real's signalling NaN comes back quiet (C's float → double → float in struct)."""
     if vtype is VT.LREAL:
@@ -213,7 +213,7 @@ def _float_bits(f: FunctionText, operand: object, vtype: VT) -> str:
             return f.value(f"select i1 {f.truth(bit(f, operand))}, i64 4607182418800017408, "
                            f"i64 0")  # 1.0
         assert isinstance(operand, int)
-        return str(_signed(typed.lreal_bits(typed.bits_real(operand)), 8))
+        return str(signed(typed.lreal_bits(typed.bits_real(operand)), 8))
     if isinstance(operand, Address) and operand.bit is None:
         raw = load(f, operand, 4)
         exponent = f.value(f"and i32 {raw}, 2139095040")
@@ -224,15 +224,15 @@ def _float_bits(f: FunctionText, operand: object, vtype: VT) -> str:
     if isinstance(operand, Address):
         return f.value(f"select i1 {f.truth(bit(f, operand))}, i32 1065353216, i32 0")
     assert isinstance(operand, int)
-    return str(_signed(typed.real_bits(typed.bits_real(operand)) & 0xFFFFFFFF, 4))
+    return str(signed(typed.real_bits(typed.bits_real(operand)) & 0xFFFFFFFF, 4))
 
 
-def _signed(raw: int, width: int) -> int:
+def signed(raw: int, width: int) -> int:
     half = 1 << (8 * width - 1)
     return raw - (half << 1) if raw >= half else raw
 
 
-def _write_float_bits(f: FunctionText, target: object, vtype: VT, raw: str) -> None:
+def write_float_bits(f: FunctionText, target: object, vtype: VT, raw: str) -> None:
     """`typed.write` of a Real/LReal given its bits."""
     if not isinstance(target, Address):
         return
@@ -255,7 +255,7 @@ def _move(b: Block, impl: FunctionImpl, params: Sequence[object],
 
     def body() -> None:
         if vtype in typed.FLOATS:
-            _write_float_bits(f, target, vtype, _float_bits(f, source, vtype))
+            write_float_bits(f, target, vtype, float_bits(f, source, vtype))
         else:
             write_int(f, target, vtype, read_int(f, source, vtype))
 
@@ -263,7 +263,7 @@ def _move(b: Block, impl: FunctionImpl, params: Sequence[object],
     return inputs[0]
 
 
-def _fits_type(f: FunctionText, value: str, vtype: VT, kind: str = "i64") -> str:
+def fits_type(f: FunctionText, value: str, vtype: VT, kind: str = "i64") -> str:
     """`typed.fits` of an integer (i1)."""
     low, high = typed.limits(vtype)
     return f.value(f"and i1 {f.value(f'icmp sge {kind} {value}, {low}')}, "
@@ -296,7 +296,7 @@ def _arithmetic(name: str) -> Emitter:
             f.start(divide)
             result = f.value(f"sdiv i64 {a}, {c}")
             write_int(f, target, vtype, result)
-            ok = _fits_type(f, result, vtype)
+            ok = fits_type(f, result, vtype)
             divided = f.block
             f.add(f"br label %{done}")
             f.start(done)
@@ -305,7 +305,7 @@ def _arithmetic(name: str) -> Emitter:
             wide = [f.value(f"sext i64 {v} to i128") for v in (a, c)]
             result = f.value(f"{_OPS[name]} i128 {wide[0]}, {wide[1]}")
             write_int(f, target, vtype, result, "i128")
-            ok = _fits_type(f, result, vtype, "i128")
+            ok = fits_type(f, result, vtype, "i128")
         ran = f.block
         f.join(after)
         w1 = f.value(f"phi i1 [false, %{start}], [{ok}, %{ran}]")
@@ -328,42 +328,13 @@ def _step(delta: int) -> Emitter:
         _, after = f.branch(inputs[0])
         result = f.value(f"add i64 {read_int(f, target, vtype)}, {delta}")
         write_int(f, target, vtype, result)
-        ok = _fits_type(f, result, vtype)
+        ok = fits_type(f, result, vtype)
         ran = f.block
         f.join(after)
         w1 = f.value(f"phi i1 [false, %{start}], [{ok}, %{ran}]")
         return f.value(f"zext i1 {w1} to i8")
 
     return emit
-
-
-def _convert(b: Block, impl: FunctionImpl, params: Sequence[object],
-             inputs: list[str]) -> str | None:
-    """CONVERT of an integer to an integer (wrapped, W1 = it fits) or to Real/LReal (W1 = 1);
-    from Real/LReal it calls back."""
-    if len(params) != 4:
-        return None
-    source, target = value_type(params[0], floats=False), value_type(params[1])
-    if source is None or target is None or not big_endian(b) or \
-            not readable(params[2], source) or not writable(params[3], target):
-        return None
-    f, out = b.f, params[3]
-    start = f.block
-    _, after = f.branch(inputs[0])
-    value = read_int(f, params[2], source)
-    if target in typed.FLOATS:
-        kind = "double" if target is VT.LREAL else "float"
-        number = f.value(f"sitofp i64 {value} to {kind}")
-        bits = "i64" if target is VT.LREAL else "i32"
-        _write_float_bits(f, out, target, f.value(f"bitcast {kind} {number} to {bits}"))
-        ok = "true"
-    else:
-        write_int(f, out, target, value)
-        ok = _fits_type(f, value, target)
-    ran = f.block
-    f.join(after)
-    w1 = f.value(f"phi i1 [false, %{start}], [{ok}, %{ran}]")
-    return f.value(f"zext i1 {w1} to i8")
 
 
 load_all()
@@ -380,6 +351,5 @@ STATEFUL: dict[FunctionImpl, tuple[str, Emitter]] = {
                                                               "S7.DIV")},
     REGISTRY["S7.INC"]: ("s7", _step(1)),
     REGISTRY["S7.DEC"]: ("s7", _step(-1)),
-    REGISTRY["S7.CONVERT"]: ("s7", _convert),
 }
 """S7's stateless rows (their state block stays unused): implementation -> (kind, emitter)."""

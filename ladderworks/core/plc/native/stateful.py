@@ -41,6 +41,7 @@ from ladderworks.core.plc.native import (
     layout,
     rotation,
     s7_bits,
+    s7_convert,
     s7_timers,
     s7_values,
     search,
@@ -86,6 +87,7 @@ StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], s
 ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
 ROWS.update(s7_values.STATEFUL)
 ROWS.update(s7_bits.STATEFUL)
+ROWS.update(s7_convert.STATEFUL)
 ROWS.update(s7_timers.STATEFUL)
 ROWS.update(search.STATEFUL)
 
