@@ -31,7 +31,7 @@ HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "e
 CHANGED = 1 << 15
 # S7: the call site's "timer" (s7_timers.Timer) / "places" (s7_counters) is in the dict; the
 # pad word (INSTANCE) says its instance: area index << 24 | count type << 16 | byte
-HAS_TIMER, HAS_PLACES, INSTANCE = 1 << 20, 1 << 21, 1
+HAS_TIMER, HAS_PLACES, INSTANCE = 1 << 29, 1 << 30, 1  # high bits: far from the others
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
 class Block:
