@@ -15,6 +15,7 @@ compares and arithmetic, forces and disabled elements, monitored or not.
 from __future__ import annotations
 
 import ctypes
+import dataclasses
 import random
 from pathlib import Path
 
@@ -169,7 +170,10 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
     binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nDCNV D0 D2\n"
-                       "WRT Y0.0\n")  # DCNV: called back
+                       "WRT Y0.0\n")
+    binary = dataclasses.replace(binary, ops=tuple(  # DCNV of D area's last byte: called back
+        dataclasses.replace(op, params=(Address(Area.D, 9999), *op.params[1:]))
+        if op.name == "DCNV" else op for op in binary.ops))
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
     assert len(engine._current.callbacks) == 1
