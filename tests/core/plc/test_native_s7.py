@@ -364,12 +364,6 @@ S7_EXAMPLES = sorted((Path(__file__).resolve().parents[3] / "resources" / "examp
                                 "examples").glob("s7-xml/*/*.xml"))
 
 
-# the timers example writes its TON's ET into %MD0, over the clock and system memory bytes
-# (MB0, MB1) the dialect sets before each scan: after skipped scans those bytes hold what the
-# clocks say then, not what the last scan left (the skipper's, in Python as natively)
-_WRITES_THE_CLOCK_BYTES = {"timers"}
-
-
 @pytest.mark.parametrize("skipping", [False, True], ids=["every scan, monitored", "skipping"])
 @pytest.mark.parametrize("path", [p for p in S7_EXAMPLES if p.suffix == ".s7dcl"],
                          ids=lambda p: p.parent.name)
@@ -379,8 +373,7 @@ def test_every_s7_example_runs_natively_as_in_python(path: Path, skipping: bool)
     memory, states and scans after every run (test_skipping's Driver)."""
     compiled = compile_program(parse_file(path).program)
     assert compiled.binary is not None
-    _same_when_driven(decode(compiled.binary), path.parent.name,
-                      skipping and path.parent.name not in _WRITES_THE_CLOCK_BYTES)
+    _same_when_driven(decode(compiled.binary), path.parent.name, skipping)
 
 
 @pytest.mark.parametrize("rows", ["timers", "counters", "bits"])
