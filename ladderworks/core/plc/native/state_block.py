@@ -12,11 +12,13 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from ladderworks.core.address import Address
+from ladderworks.core.plc.functions import s7_counters, s7_timers
 from ladderworks.core.plc.native import layout
 from ladderworks.core.plc.native.builtins import _fits as _fits
 from ladderworks.core.plc.native.builtins import _load as _load
 from ladderworks.core.plc.native.builtins import _store as _store
-from ladderworks.core.plc.native.ir_text import FunctionText
+from ladderworks.core.plc.native.ir_text import AREA_ORDER, FunctionText
 
 BLOCK = 8  # words per site: flags, pad, elapsed (i64), at (i64), wake (i64)
 ELAPSED, AT, WAKE = 2, 4, 6
@@ -30,15 +32,19 @@ HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "e
 # "elapsed" is), "ck" (the last CK), "loaded", "before" (the edge contact's last device bit)
 AS_MS, HAS_CK, CK, HAS_LOADED, LOADED, HAS_BEFORE, BEFORE = (1 << k for k in range(20, 27))
 CHANGED = 1 << 15
+# S7: the call site's "timer" (s7_timers.Timer) / "places" (s7_counters) is in the dict; the
+# pad word (INSTANCE) says its instance: area index << 24 | count type << 16 | byte
+HAS_TIMER, HAS_PLACES, INSTANCE = 1 << 29, 1 << 30, 1  # high bits: far from the others
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
 class Block:
     """The IR of one site's state block (`base`: its first word)."""
 
     def __init__(self, f: FunctionText, base: int, number: int, dirty_list: int,
-                 marks: int) -> None:
+                 marks: int, dialect: str = "seed") -> None:
         self.f, self.base, self.number, self.dirty_list = f, base, number, dirty_list
         self.mark = marks + number
+        self.dialect = dialect  # the program's: its byte order (dialects.get(...).byteorder)
 
     def ptr(self, offset: int) -> str:
         return self.f.word_ptr(self.base + offset)
@@ -134,6 +140,8 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
     for key, has, value_bit in _FATEK_BOOLS:
         if flags & has:
             state[key] = bool(flags & value_bit)
+    if flags & (HAS_TIMER | HAS_PLACES):
+        _pull_instance(words[base + INSTANCE], flags, state)
 
 
 def push(words: Any, base: int, state: dict[str, Any]) -> None:
@@ -163,7 +171,29 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
     for key, has, value_bit in _FATEK_BOOLS:
         if key in state:
             flags |= has | (value_bit if state[key] else 0)
+    if state.get("timer") is not None:
+        flags |= HAS_TIMER
+        words[base + INSTANCE] = instance_word(state["timer"].pt_at)
+    if state.get("places") is not None:
+        flags |= HAS_PLACES
+        places = state["places"]
+        words[base + INSTANCE] = instance_word(places[1], int(places[0]))
     words[base] = flags
+
+
+def instance_word(instance: Address, vtype: int = 0) -> int:
+    """The INSTANCE word of an S7 timer's or counter's instance (and count type)."""
+    return AREA_ORDER.index(instance.area) << 24 | vtype << 16 | instance.byte
+
+
+def _pull_instance(word: int, flags: int, state: dict[str, Any]) -> None:
+    """An S7 site's "timer" or "places" as its Python function makes them at its first run
+    (kept when the dict has one: they never change)."""
+    instance = Address(AREA_ORDER[word >> 24], word & 0xFFFF)
+    if flags & HAS_TIMER and state.get("timer") is None:
+        state["timer"] = s7_timers.Timer.unbound(instance)
+    if flags & HAS_PLACES and state.get("places") is None:
+        s7_counters._places(state, (instance, word >> 16 & 0xFF))
 
 
 def _get64(words: Any, word: int) -> int:
