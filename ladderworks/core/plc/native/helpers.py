@@ -15,14 +15,16 @@ from ladderworks.core.plc.native.state_block import (
     ELAPSED,
     ELAPSED_SET,
     HAS_AT,
+    HAS_MS,
     HAS_VALUE,
 )
 
 # grow(before, after, edges, blocks, out): two copies of the edge memories (`edges` words)
 # and the state blocks (`blocks` blocks of 8 words: flags, pad, elapsed, at, wake). -1 when
 # an edge memory, a block's flags or wake differ, or a time value that is not one (an
-# elapsed time not set, CTRB's value, an `at` the dict has not); else the count of blocks
-# whose time values grew, each as three i64 in `out`: the block, elapsed's and at's growth.
+# elapsed time not set, CTRB's value, an `at` the dict has not; Delta TMR's "ms" is one);
+# else the count of blocks whose time values grew, each as three i64 in `out`: the block,
+# elapsed's and at's growth.
 _GROW = f"""
 define i32 @grow(ptr %a, ptr %b, i32 %edges, i32 %blocks, ptr %out) {{
 entry:
@@ -76,7 +78,7 @@ times:
   %de = sub i64 %eb, %ea
   %da = sub i64 %tb, %ta
   %flags = trunc i64 %fb to i32
-  %eset = and i32 %flags, {ELAPSED_SET}
+  %eset = and i32 %flags, {ELAPSED_SET | HAS_MS}
   %hval = and i32 %flags, {HAS_VALUE}
   %hat = and i32 %flags, {HAS_AT}
   %eok1 = icmp ne i32 %eset, 0

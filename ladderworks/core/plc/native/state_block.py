@@ -3,7 +3,8 @@ the block's layout, its IR (`Block`), an error output held as `held_output` hold
 dicts written from the words (`pull`) and the words from the dicts (`push`).
 
 The flags word says which keys the dict has and holds the booleans and a "changed" bit; three
-64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value` at `elapsed`). A block that
+64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value` and Delta TMR's `ms` at
+`elapsed`). A block that
 changed in a scan puts its number in the changed list once (layout.DIRTY).
 """
 
@@ -27,6 +28,8 @@ HAS_ACT, ACT, HAS_VALUE = 1024, 2048, 4096  # counters: the last ACT; CTRB's val
 HAS_PREV, PREV = 1 << 13, 1 << 14  # Delta's pulse forms: the input at the last execution
 HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "en", "fo0"
 CHANGED = 1 << 15
+# Delta's TMR: "running", and "ms" (the time short of a tick, at ELAPSED: a time value)
+HAS_RUNNING, RUNNING, HAS_MS = 1 << 24, 1 << 25, 1 << 26
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
 class Block:
@@ -125,6 +128,10 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
         state["fo0"] = bool(flags & FO0)
     if flags & HAS_VALUE:
         state["value"] = _get64(words, base + ELAPSED)
+    if flags & HAS_RUNNING:
+        state["running"] = bool(flags & RUNNING)
+    if flags & HAS_MS:
+        state["ms"] = _get64(words, base + ELAPSED)
 
 
 def push(words: Any, base: int, state: dict[str, Any]) -> None:
@@ -140,12 +147,15 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
                     flags |= ELAPSED_SET
     for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1), ("act", HAS_ACT, ACT),
                                 ("prev", HAS_PREV, PREV), ("en", HAS_EN, EN),
-                                ("fo0", HAS_FO0, FO0)):
+                                ("fo0", HAS_FO0, FO0), ("running", HAS_RUNNING, RUNNING)):
         if key in state:
             flags |= has | (value_bit if state[key] else 0)
     if "value" in state:
         flags |= HAS_VALUE
         _set64(words, base + ELAPSED, int(state["value"]))
+    if "ms" in state:
+        flags |= HAS_MS
+        _set64(words, base + ELAPSED, int(state["ms"]))
     words[base] = flags
 
 

@@ -37,6 +37,7 @@ from ladderworks.core.plc.native import (
     bcd,
     builtins,
     contacts,
+    delta_timers,
     fatek,
     layout,
     rotation,
@@ -80,6 +81,7 @@ StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], s
 # rows of other modules, each with its state in a block: implementation -> (kind, emitter);
 # a module adds its own dict with one `ROWS.update(module.STATEFUL)` line below
 ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
+ROWS.update(delta_timers.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
@@ -376,6 +378,7 @@ builtins.EMITTERS.update(words.EMITTERS)
 builtins.EMITTERS.update(words32.EMITTERS)
 builtins.EMITTERS.update(contacts.EMITTERS)
 builtins.EMITTERS.update(fatek.EMITTERS)
+builtins.EMITTERS.update(delta_timers.EMITTERS)
 words.PULSES.update(words32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 

@@ -1,0 +1,241 @@
+"""Delta DVP's TMR, CNT and DCNT as native code (core/plc/functions/dvp_timers.py,
+dvp_counters.py), each with its state in a block (state_block.py: TMR's "at", "wake",
+"running" and "ms" in ELAPSED; a counter's "prev"), and RST of a T, C or D device (no state).
+A high-speed counter (C235-C255: dvp_high_speed) and a parameter the Python code would take
+otherwise (a timer or counter not of its letter, data past its area) call back."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from ladderworks.core.address import Address
+from ladderworks.core.dialects.delta import DEVICES, M1028, M1200, WIDE_COUNTERS, C, T
+from ladderworks.core.dialects.delta.tables import timer_base_ms
+from ladderworks.core.plc.functions import NEVER, FunctionImpl, dvp_counters, dvp_timers
+from ladderworks.core.plc.functions.dvp_data import bit_after
+from ladderworks.core.plc.functions.dvp_high_speed import TABLE
+from ladderworks.core.plc.native import layout, words, words32
+from ladderworks.core.plc.native.builtins import Emitter, _load, _store, _when
+from ladderworks.core.plc.native.ir_text import FunctionText
+from ladderworks.core.plc.native.state_block import (
+    AT,
+    CHANGED,
+    ELAPSED,
+    HAS_AT,
+    HAS_MS,
+    HAS_PREV,
+    HAS_RUNNING,
+    HAS_WAKE,
+    PREV,
+    RUNNING,
+    WAKE,
+    Block,
+)
+from ladderworks.core.plc.native.words import _bit, _place, _Refused
+
+StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], str | None]
+_REFUSED = (_Refused, ValueError, TypeError, KeyError, AssertionError)
+
+
+def _time(f: FunctionText, word: int) -> str:
+    return f.value(f"load i64, ptr {f.word_ptr(word)}, align 4")
+
+
+def _number(device: object, letter: object) -> int:
+    """The number of timer / counter `device` (its value's address) of `letter` (T, C)."""
+    if not isinstance(device, Address) or device.bit is not None:
+        raise _Refused
+    number = letter.word_number(device)  # type: ignore[attr-defined]
+    if number is None:
+        raise _Refused
+    return int(number)
+
+
+def _base(f: FunctionText, number: int) -> str:
+    """`dvp_timers.base_ms`: M1028 read now where it matters."""
+    slow, fast = timer_base_ms(number, False), timer_base_ms(number, True)
+    if slow == fast:
+        return str(slow)
+    _place(M1028, 1)
+    assert M1028.bit is not None
+    on = f.truth(f.bit(M1028.area, M1028.byte, M1028.bit, False))
+    return f.value(f"select i1 {on}, i64 {fast}, i64 {slow}")
+
+
+def _tmr(b: Block, impl: FunctionImpl, params: Sequence[object],
+         inputs: list[str]) -> str | None:
+    """TMR Tn SV: off: value 0, contact off, not running, ms 0; on, once a scan: the scan's
+    time (not in the scan it starts) in ticks of its base up to the set value."""
+    timer, preset = params
+    number = _number(timer, T)
+    assert isinstance(timer, Address)
+    place, contact = _place(timer, 2), T.bit_address(number)
+    _place(contact, 1)
+    target_of = words._source(preset)
+    f = b.f
+    flags = b.flags()
+    on, off, run, count, stop, counted, joined = (f.label() for _ in range(7))
+    f.add(f"br i1 {f.truth(inputs[-1])}, label %{on}, label %{off}")
+    f.start(off)
+    _store(f, place, 2, "0")
+    _bit(f, contact, "false")
+    had_ms = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_MS}')}, 0")
+    ms_was = f.value(f"select i1 {had_ms}, i64 {b.load64(ELAPSED)}, i64 0")
+    b.store64(ELAPSED, "0")
+    stopped = f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_RUNNING | HAS_MS}')}, "
+                      f"{~RUNNING}")
+    moved = f.value(f"icmp ne i64 {ms_was}, 0")
+    b.set_flags(flags, f.value(f"or i32 {stopped}, "
+                               f"{f.value(f'select i1 {moved}, i32 {CHANGED}, i32 0')}"))
+    f.add(f"br label %{joined}")
+    f.start(on)  # executed_once_this_scan: "at" is not now
+    now = _time(f, layout.NOW)
+    has_at = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_AT}')}, 0")
+    again = f.value(f"and i1 {has_at}, {f.value(f'icmp eq i64 {b.load64(AT)}, {now}')}")
+    f.add(f"br i1 {again}, label %{joined}, label %{run}")
+    f.start(run)
+    b.store64(AT, now)
+    running = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_RUNNING | RUNNING}')}, "
+                      f"{HAS_RUNNING | RUNNING}")
+    has_ms = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_MS}')}, 0")
+    ms = f.value(f"select i1 {has_ms}, i64 {b.load64(ELAPSED)}, i64 0")
+    step = f.value(f"select i1 {running}, i64 {_time(f, layout.SCAN_MS)}, i64 0")
+    elapsed = f.value(f"add i64 {ms}, {step}")
+    target = target_of(f)
+    current = f.value(f"sext i16 {_load(f, place, 2)} to i64")
+    base = _base(f, number)
+    f.add(f"br i1 {f.value(f'icmp slt i64 {current}, {target}')}, label %{count}, "
+          f"label %{stop}")
+    f.start(count)
+    ticks = f.value(f"sdiv i64 {elapsed}, {base}")
+    left = f.value(f"srem i64 {elapsed}, {base}")
+    next_tick = f.value(f"sub i64 {f.value(f'add i64 {now}, {base}')}, {left}")
+    grown = f.value(f"add i64 {current}, {ticks}")
+    lower = f.value(f"select i1 {f.value(f'icmp slt i64 {grown}, {target}')}, i64 {grown}, "
+                    f"i64 {target}")
+    value = f.value(f"select i1 {f.value(f'icmp slt i64 {lower}, 32767')}, i64 {lower}, "
+                    f"i64 32767")
+    _store(f, place, 2, f.value(f"trunc i64 {value} to i16"))
+    f.add(f"br label %{counted}")
+    f.start(stop)  # at the set value: no time counts on
+    f.add(f"br label %{counted}")
+    f.start(counted)
+    kept = f.value(f"phi i64 [{left}, %{count}], [0, %{stop}]")
+    wake = f.value(f"phi i64 [{next_tick}, %{count}], [{NEVER}, %{stop}]")
+    final = f.value(f"phi i64 [{value}, %{count}], [{current}, %{stop}]")
+    b.store64(ELAPSED, kept)
+    b.store64(WAKE, wake)
+    scan_wake = _time(f, layout.WAKE)
+    earlier = f.value(f"icmp slt i64 {wake}, {scan_wake}")
+    f.add(f"store i64 {f.value(f'select i1 {earlier}, i64 {wake}, i64 {scan_wake}')}, "
+          f"ptr {f.word_ptr(layout.WAKE)}, align 4")
+    _bit(f, contact, f.value(f"icmp sge i64 {final}, {target}"))
+    b.set_flags(flags, f.value(f"or i32 {flags}, "
+                               f"{HAS_AT | HAS_RUNNING | RUNNING | HAS_MS | HAS_WAKE | CHANGED}"))
+    f.add(f"br label %{joined}")
+    f.start(joined)
+    return inputs[-1]
+
+
+def _rising(b: Block, act: str) -> str:
+    """`dvp_data.rising` (the input kept as "prev"): an i1."""
+    f = b.f
+    flags = b.flags()
+    before = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {PREV}')}, 0")
+    kept = f.value(f"or i32 {f.value(f'and i32 {flags}, {~PREV}')}, {HAS_PREV}")
+    b.set_flags(flags, f.value(f"select i1 {act}, i32 {f.value(f'or i32 {kept}, {PREV}')}, "
+                               f"i32 {kept}"))
+    return f.value(f"and i1 {act}, {f.value(f'xor i1 {before}, true')}")
+
+
+def _cnt(b: Block, impl: FunctionImpl, params: Sequence[object],
+         inputs: list[str]) -> str | None:
+    """CNT Cn SV: +1 at a rising input below the set value; the contact: value >= SV."""
+    counter, preset = params
+    number = _number(counter, C)
+    assert isinstance(counter, Address)
+    place, contact = _place(counter, 2), C.bit_address(number)
+    _place(contact, 1)
+    target_of = words._source(preset)
+    f = b.f
+    target = target_of(f)
+    current = f.value(f"sext i16 {_load(f, place, 2)} to i64")
+    up = f.value(f"and i1 {_rising(b, f.truth(inputs[-1]))}, "
+                 f"{f.value(f'icmp slt i64 {current}, {target}')}")
+    value = f.value(f"add i64 {current}, {f.value(f'zext i1 {up} to i64')}")
+    _store(f, place, 2, f.value(f"trunc i64 {value} to i16"))
+    _bit(f, contact, f.value(f"icmp sge i64 {value}, {target}"))
+    return inputs[-1]
+
+
+def _dcnt(b: Block, impl: FunctionImpl, params: Sequence[object],
+          inputs: list[str]) -> str | None:
+    """DCNT Cn SV (C200-C234): +1 or -1 (M1200+n-200) at a rising input, 32-bit wrapping."""
+    counter, preset = params
+    number = _number(counter, C)
+    if number in TABLE or number < WIDE_COUNTERS:
+        raise _Refused
+    assert isinstance(counter, Address)
+    place, contact = _place(counter, 4), C.bit_address(number)
+    _place(contact, 1)
+    down_at = _place(bit_after(M1200, number - WIDE_COUNTERS), 1)
+    assert down_at.bit is not None
+    target_of = words32._source(preset)
+    f = b.f
+    rise = _rising(b, f.truth(inputs[-1]))
+    down = f.truth(f.bit(down_at.area, down_at.byte, down_at.bit, False))
+    step = f.value(f"select i1 {rise}, i32 {f.value(f'select i1 {down}, i32 -1, i32 1')}, "
+                   f"i32 0")
+    value = f.value(f"add i32 {_load(f, place, 4)}, {step}")
+    _store(f, place, 4, value)
+    wide = f.value(f"sext i32 {value} to i64")
+    _bit(f, contact, f.value(f"icmp sge i64 {wide}, {target_of(f)}"))
+    return inputs[-1]
+
+
+def _guarded(emit: StatefulEmitter) -> StatefulEmitter:
+    def run(b: Block, impl: FunctionImpl, params: Sequence[object],
+            inputs: list[str]) -> str | None:
+        if len(params) != 2 or not inputs:
+            return None
+        try:
+            return emit(b, impl, params, inputs)
+        except _REFUSED:
+            return None
+
+    return run
+
+
+def _rst(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """RST Tn / Cn / Dn while the input is on: the value 0 (its own width), a contact off."""
+    if len(params) != 1 or not inputs:
+        return None
+    (device,) = params
+    try:
+        width = DEVICES.width_at(device)  # type: ignore[arg-type]
+        place = _place(device, width)
+        if width not in (1, 2, 4, 8):
+            return None
+        found = DEVICES.device_of(place)
+        contact = found[0].bit_address(found[1]) \
+            if found is not None and found[0].bits is not None else None
+        if contact is not None:
+            _place(contact, 1)
+    except _REFUSED:
+        return None
+
+    def body() -> None:
+        _store(f, place, width, "0")
+        if contact is not None:
+            _bit(f, contact, "false")
+
+    _when(f, inputs[-1], body)
+    return inputs[-1]
+
+
+STATEFUL: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {
+    dvp_timers.tmr: ("dvp timer", _guarded(_tmr)),
+    dvp_counters.cnt: ("dvp counter", _guarded(_cnt)),
+    dvp_counters.dcnt: ("dvp counter", _guarded(_dcnt)),
+}
+EMITTERS: dict[FunctionImpl, Emitter] = {dvp_counters.rst: _rst}
