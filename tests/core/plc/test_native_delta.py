@@ -105,16 +105,83 @@ def test_a_running_tmr_is_skipped_natively_as_python_runs_it(tmp_path: Path) -> 
     assert native.skipped > 0
 
 
-ROWS = {
-    "RST": _gated("RST T0", "RST C0", "RST C200", "RST D20", "RST T5"),
+# each row's lines (one input each); packed into programs of up to 16 below
+ROWS: dict[str, tuple[str, ...]] = {
+    "RST": ("RST T0", "RST C0", "RST C200", "RST D20", "RST T5"),
+    # word logic (16 and 32 bits: C200 is 32-bit, C0 16-bit in a D form)
+    "WAND": ("WAND D0 D1 D20", "WAND K-1 C200 D21", "WAND D2 H0F0F C201"),
+    "WOR": ("WOR D0 D1 D20", "WOR K-32768 C200 D21", "WOR D2 K5 C201"),
+    "WXOR": ("WXOR D0 D1 D20", "WXOR K-1 C200 D21", "WXOR D2 D2 C201"),
+    "DAND": ("DAND D0 D2 D20", "DAND K-1 C200 D22", "DAND D4 K65535 C0"),
+    "DOR": ("DOR D0 D2 D20", "DOR K-2147483648 C200 D22", "DOR D4 D6 C201"),
+    "DXOR": ("DXOR D0 D2 D20", "DXOR K-1 C200 D22", "DXOR D4 D4 C0"),
+    "NEG": ("NEG D0", "NEG C200", "NEG D1", "NEG D2"),
+    "DNEG": ("DNEG D0", "DNEG C200", "DNEG C0", "DNEG D2"),
+    "CML": ("CML D0 D20", "CML C200 D21", "CML K5 C201"),
+    "DCML": ("DCML D0 D20", "DCML C200 D22", "DCML K-1 C0"),
+    "ABS": ("ABS D0", "ABS C200", "ABS D1", "ABS D2"),
+    "DABS": ("DABS D0", "DABS C200", "DABS C0", "DABS D2"),
+    "SWAP": ("SWAP D0", "SWAP C200", "SWAP D1"),
+    "DSWAP": ("DSWAP D0", "DSWAP C200", "DSWAP C0"),
+    # rotations: a count from data (mostly out of range: the operation error) or constants
+    "ROR": ("ROR D0 D1", "ROR D2 K1", "ROR D3 K16", "ROR C200 K5"),
+    "ROL": ("ROL D0 D1", "ROL D2 K1", "ROL D3 K16", "ROL C200 K5"),
+    "DROR": ("DROR D0 D1", "DROR D2 K1", "DROR D4 K32", "DROR C200 K7", "DROR C0 K3"),
+    "DROL": ("DROL D0 D1", "DROL D2 K1", "DROL D4 K32", "DROL C200 K7", "DROL C0 K3"),
+    "RCR": ("RCR D0 D1", "RCR D2 K1", "RCR D3 K16", "RCR C200 K5"),
+    "RCL": ("RCL D0 D1", "RCL D2 K1", "RCL D3 K16", "RCL C200 K5"),
+    "DRCR": ("DRCR D0 D1", "DRCR D2 K1", "DRCR D4 K32", "DRCR C200 K9", "DRCR C0 K2"),
+    "DRCL": ("DRCL D0 D1", "DRCL D2 K1", "DRCL D4 K32", "DRCL C200 K9"),
+    # bits of words
+    "BON": ("BON D0 M0 D1", "BON D2 M1 K15", "BON C200 Y0 K3",
+                  "BON D4 M3 K0"),
+    "DBON": ("DBON D0 M0 D1", "DBON D2 M1 K31", "DBON C200 Y0 K20",
+                   "DBON C0 M3 K15"),
+    "BSET": ("BSET D0 D1", "BSET D2 K15", "BSET C200 K3"),
+    "BRST": ("BRST D0 D1", "BRST D2 K15", "BRST C200 K3"),
+    "DBSET": ("DBSET D0 D1", "DBSET D2 K31", "DBSET C200 K20", "DBSET C0 K5"),
+    "DBRST": ("DBRST D0 D1", "DBRST D2 K31", "DBRST C200 K20"),
+    # Gray code and BCD
+    "GRY": ("GRY D0 D20", "GRY C200 D21", "GRY K1234 D22", "GRY K-1 D23"),
+    "GBIN": ("GBIN D0 D20", "GBIN C200 D21", "GBIN K1234 D22", "GBIN D1 C201"),
+    "DGRY": ("DGRY D0 D20", "DGRY C200 D22", "DGRY K2147483647 D24", "DGRY D2 C0"),
+    "DGBIN": ("DGBIN D0 D20", "DGBIN C200 D22", "DGBIN K-5 D24", "DGBIN D2 C0"),
+    "BCD": ("BCD D0 D20", "BCD C200 D21", "BCD K9999 D22", "BCD K10000 D23",
+                  "BCD K0 D24", "BCD D1 C201"),
+    "BIN": ("BIN D0 D20", "BIN C200 D21", "BIN H9999 D22", "BIN H9A D23", "BIN D1 C201"),
+    "DBCD": ("DBCD D0 D20", "DBCD C200 D22", "DBCD K99999999 D24",
+                   "DBCD K100000000 D26", "DBCD D2 C0"),
+    "DBIN": ("DBIN D0 D20", "DBIN C200 D22", "DBIN H99999999 D24", "DBIN D2 C0"),
 }
+_PLAIN = ("RST", "BSET", "BRST", "DBSET", "DBRST")  # no pulse form
+
+
+def _packed(rows: dict[str, tuple[str, ...]], pulse: bool) -> dict[str, str]:
+    """Programs of up to 16 gated lines (X0-X17), the rows in order (`pulse`: their P forms,
+    for the rows that have one), by the names of the rows they hold."""
+    programs: dict[str, str] = {}
+    names: list[str] = []
+    lines: list[str] = []
+    for name, own in [*rows.items(), ("", ())]:
+        if pulse and name in _PLAIN:
+            continue
+        if names and (not name or len(lines) + len(own) > 16):
+            programs[",".join(names) + ("/P" if pulse else "")] = _gated(*lines)
+            names, lines = [], []
+        names.append(name)
+        lines += [line.replace(f"{name} ", f"{name}P ", 1) if pulse else line for line in own]
+    return programs
+
+
+PROGRAMS = {**_packed(ROWS, False), **_packed(ROWS, True)}
 
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
-@pytest.mark.parametrize("row", sorted(ROWS))
+@pytest.mark.parametrize("rows", sorted(PROGRAMS))
 @settings(max_examples=examples(10), deadline=None)
 @given(scans=_scans)
-def test_a_delta_word_row_runs_natively_as_in_python(row: str, monitored: bool, scans: list,
-                                                     tmp_path_factory: pytest.TempPathFactory
-                                                     ) -> None:
-    _run(_delta(ROWS[row], tmp_path_factory.mktemp("rows")), monitored, scans, counters=True)
+def test_delta_word_rows_run_natively_as_in_python(rows: str, monitored: bool, scans: list,
+                                                   tmp_path_factory: pytest.TempPathFactory
+                                                   ) -> None:
+    _run(_delta(PROGRAMS[rows], tmp_path_factory.mktemp("rows")), monitored, scans,
+         counters=True)

@@ -37,6 +37,7 @@ from ladderworks.core.plc.native import (
     bcd,
     builtins,
     contacts,
+    delta_logic,
     delta_timers,
     fatek,
     layout,
@@ -379,7 +380,9 @@ builtins.EMITTERS.update(words32.EMITTERS)
 builtins.EMITTERS.update(contacts.EMITTERS)
 builtins.EMITTERS.update(fatek.EMITTERS)
 builtins.EMITTERS.update(delta_timers.EMITTERS)
+builtins.EMITTERS.update(delta_logic.EMITTERS)
 words.PULSES.update(words32.PULSES)
+words.PULSES.update(delta_logic.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
