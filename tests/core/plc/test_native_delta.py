@@ -7,20 +7,21 @@ several periods, their T values now and then written too, and once with the skip
 
 from __future__ import annotations
 
-from pathlib import Path
+from functools import cache
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderworks.core.address import Area
-from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.compiler import compile_program
+from ladderworks.core.compiler.binary import BinaryProgram, decode
 from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.plc.engine import ScanEngine
 from tests.core.plc.test_native_functions import (
     DATA,
     _byte,
-    _delta,
     _gated,
     _run,
     _scans,
@@ -31,6 +32,15 @@ from tests.core.plc.test_native_functions import (
 from tests.hypothesis_profiles import examples
 
 _T = DEVICES.word("T0")[0]
+
+
+@cache
+def _delta(body: str) -> BinaryProgram:
+    """The program of Delta text `body` (compiled once: hypothesis runs it many times)."""
+    result = parse_bytes((body + "END\n").encode("ascii"), "delta")
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None, [d.message() for d in compiled.diagnostics][:3]
+    return decode(compiled.binary)
 
 # TMR: a D preset (any value), constants, a 10 ms timer (M1028 on X3), the 1 ms one, a 32-bit
 # C200 preset, and a subroutine's timer run twice a scan (counted once)
@@ -68,8 +78,8 @@ def _load(engine: ScanEngine, data: list[int], low: int, high: int, timers: bool
     memory[Area.X][0], memory[Area.X][1] = low, high
 
 
-def _run_timed(program: str, tmp: Path, monitored: bool, period: int, scans: list) -> None:
-    python, native = _pair(_delta(program, tmp), monitored, period)
+def _run_timed(program: str, monitored: bool, period: int, scans: list) -> None:
+    python, native = _pair(_delta(program), monitored, period)
     for data, low, high, timers in scans:
         for engine in (python, native):
             _load(engine, data, low, high, timers)
@@ -86,15 +96,13 @@ def _run_timed(program: str, tmp: Path, monitored: bool, period: int, scans: lis
 @settings(max_examples=examples(12), deadline=None)
 @given(scans=_timed, period=st.sampled_from((1, 8, 30, 130)))
 def test_delta_timers_and_counters_run_natively_as_in_python(
-        program: str, monitored: bool, scans: list, period: int,
-        tmp_path_factory: pytest.TempPathFactory) -> None:
-    text = TIMERS if program == "timers" else COUNTERS
-    _run_timed(text, tmp_path_factory.mktemp("timers"), monitored, period, scans)
+        program: str, monitored: bool, scans: list, period: int) -> None:
+    _run_timed(TIMERS if program == "timers" else COUNTERS, monitored, period, scans)
 
 
-def test_a_running_tmr_is_skipped_natively_as_python_runs_it(tmp_path: Path) -> None:
+def test_a_running_tmr_is_skipped_natively_as_python_runs_it() -> None:
     """The native skipper moves TMR's "ms" and "at" on (time values) as every scan would."""
-    binary = _delta("LD X0\nTMR T0 K30\nLD X1\nTMR T64 K25\nLD T0\nOUT Y0\n", tmp_path)
+    binary = _delta("LD X0\nTMR T0 K30\nLD X1\nTMR T64 K25\nLD T0\nOUT Y0\n")
     python, native = _pair(binary, False, 8, every_scan=False)
     for low, ms in ((1, 500), (3, 2000), (0, 300), (2, 4000)):
         for engine in (python, native):
@@ -152,6 +160,25 @@ ROWS: dict[str, tuple[str, ...]] = {
     "DBCD": ("DBCD D0 D20", "DBCD C200 D22", "DBCD K99999999 D24",
                    "DBCD K100000000 D26", "DBCD D2 C0"),
     "DBIN": ("DBIN D0 D20", "DBIN C200 D22", "DBIN H99999999 D24", "DBIN D2 C0"),
+    # blocks of words and bits (counts are constants: a count in a register calls back)
+    "ZRST": ("ZRST M0 M20", "ZRST D20 D25", "ZRST T0 T3", "ZRST C0 C2", "ZRST C199 C201",
+             "ZRST Y0 Y7", "ZRST D30 D28", "ZRST S0 S9"),
+    "BMOV": ("BMOV D0 D20 K4", "BMOV D0 D2 K5", "BMOV D4 D1 K5", "BMOV C200 D30 K2"),
+    "FMOV": ("FMOV D0 D20 K3", "FMOV K-5 D30 K2", "FMOV C200 D40 K2"),
+    "DFMOV": ("DFMOV D0 D20 K3", "DFMOV K-7 C200 K2", "DFMOV C200 D30 K2"),
+    "XCH": ("XCH D0 D1", "XCH C200 D2", "XCH D3 D3"),
+    "DXCH": ("DXCH D0 D2", "DXCH C200 D4", "DXCH C0 D6"),
+    "SFTR": ("SFTR X0 M0 K16 K4", "SFTR M100 M20 K8 K8", "SFTR M0 Y0 K8 K3"),
+    "SFTL": ("SFTL X0 M0 K16 K4", "SFTL M100 M20 K8 K8", "SFTL M0 Y0 K8 K3"),
+    "WSFR": ("WSFR D0 D20 K6 K2", "WSFR K-3 D30 K4 K1", "WSFR D2 D0 K5 K5"),
+    "WSFL": ("WSFL D0 D20 K6 K2", "WSFL K-3 D30 K4 K1", "WSFL D2 D0 K5 K5"),
+    "DECO": ("DECO D0 M0 K3", "DECO D1 D20 K4", "DECO C200 Y0 K2", "DECO D2 M10 K8"),
+    "ENCO": ("ENCO D0 D20 K4", "ENCO M0 D21 K3", "ENCO X0 D22 K3", "ENCO D1 D23 K1"),
+    "ALT": ("ALT M0", "ALT Y0"),
+    "SUM": ("SUM D0 D20", "SUM C200 D21", "SUM K0 D22"),
+    "DSUM": ("DSUM D0 D20", "DSUM C200 D22", "DSUM D2 C0"),
+    "MEAN": ("MEAN D0 D20 K3", "MEAN C199 D21 K3", "MEAN D0 D22 K1", "MEAN K-7 D23 K4"),
+    "DMEAN": ("DMEAN D0 D20 K3", "DMEAN C200 D22 K2"),
 }
 _PLAIN = ("RST", "BSET", "BRST", "DBSET", "DBRST")  # no pulse form
 
@@ -180,8 +207,6 @@ PROGRAMS = {**_packed(ROWS, False), **_packed(ROWS, True)}
 @pytest.mark.parametrize("rows", sorted(PROGRAMS))
 @settings(max_examples=examples(10), deadline=None)
 @given(scans=_scans)
-def test_delta_word_rows_run_natively_as_in_python(rows: str, monitored: bool, scans: list,
-                                                   tmp_path_factory: pytest.TempPathFactory
+def test_delta_word_rows_run_natively_as_in_python(rows: str, monitored: bool, scans: list
                                                    ) -> None:
-    _run(_delta(PROGRAMS[rows], tmp_path_factory.mktemp("rows")), monitored, scans,
-         counters=True)
+    _run(_delta(PROGRAMS[rows]), monitored, scans, counters=True)

@@ -37,6 +37,7 @@ from ladderworks.core.plc.native import (
     bcd,
     builtins,
     contacts,
+    delta_blocks,
     delta_logic,
     delta_timers,
     fatek,
@@ -381,8 +382,10 @@ builtins.EMITTERS.update(contacts.EMITTERS)
 builtins.EMITTERS.update(fatek.EMITTERS)
 builtins.EMITTERS.update(delta_timers.EMITTERS)
 builtins.EMITTERS.update(delta_logic.EMITTERS)
+builtins.EMITTERS.update(delta_blocks.EMITTERS)
 words.PULSES.update(words32.PULSES)
 words.PULSES.update(delta_logic.PULSES)
+words.PULSES.update(delta_blocks.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
