@@ -7,6 +7,7 @@ several periods, their T values now and then written too, and once with the skip
 
 from __future__ import annotations
 
+import random
 from functools import cache
 
 import pytest
@@ -17,6 +18,7 @@ from ladderworks.core.address import Area
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.compiler.binary import BinaryProgram, decode
 from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.il import parse_file
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.plc.engine import ScanEngine
 from tests.core.plc.test_native_functions import (
@@ -30,6 +32,7 @@ from tests.core.plc.test_native_functions import (
     disk_cache_in_tmp as disk_cache_in_tmp,  # the autouse fixture: the disk cache in tmp
 )
 from tests.hypothesis_profiles import examples
+from tests.real_programs import real_programs_dir
 
 _T = DEVICES.word("T0")[0]
 
@@ -55,15 +58,16 @@ COUNTERS = ("LD X0\nCNT C0 D0\nLD X1\nCNT C1 K3\nLD X2\nCNT C2 C201\nLD X3\nOUT 
 
 _timed = st.lists(st.tuples(st.lists(_byte, min_size=DATA, max_size=DATA),
                             st.integers(0, 255), st.integers(0, 255), st.booleans()),
-                  min_size=1, max_size=40)
+                  min_size=1, max_size=30)
 
 
-def _pair(binary: BinaryProgram, monitored: bool, period: int,
-          every_scan: bool = True) -> tuple[ScanEngine, ScanEngine]:
+def _pair(binary: BinaryProgram, monitored: bool, period: int, every_scan: bool = True,
+          callbacks: bool = False) -> tuple[ScanEngine, ScanEngine]:
+    """A Python and a native engine (`callbacks`: some ops may call back)."""
     python = ScanEngine(binary, monitored=monitored, period_ms=period)
     native = ScanEngine(binary, monitored=monitored, period_ms=period, backend="native")
     assert native.backend_used == "native", native.backend_reason
-    assert native._current.callbacks == [], native._current.callbacks
+    assert callbacks or native._current.callbacks == [], native._current.callbacks
     python.every_scan, native.every_scan = True, every_scan
     return python, native
 
@@ -210,3 +214,39 @@ PROGRAMS = {**_packed(ROWS, False), **_packed(ROWS, True)}
 def test_delta_word_rows_run_natively_as_in_python(rows: str, monitored: bool, scans: list
                                                    ) -> None:
     _run(_delta(PROGRAMS[rows]), monitored, scans, counters=True)
+
+
+REAL = ("METALURGICA_c91257f_atual_no_programa", "NIRMALKUMAR_timer1", "NIRMALKUMAR_counter1",
+        "NIRMALKUMAR_booleangates", "NIRMALKUMAR_bcdbin", "NIRMALKUMAR_compliment")
+
+
+@pytest.mark.parametrize("name", REAL)
+def test_real_delta_programs_run_natively_as_in_python(name: str) -> None:
+    """Real WPLSoft projects using these rows (read from ../shared): 200 scans with inputs
+    changing every 7, fast and monitored, then the native skipper over 30 s."""
+    path = real_programs_dir() / "delta" / f"{name}.dvp"
+    compiled = compile_program(parse_file(path).program)
+    assert compiled.binary is not None
+    binary = decode(compiled.binary)
+    rng = random.Random(name)
+    for monitored in (False, True):
+        python, native = _pair(binary, monitored, 10, callbacks=True)
+        for k in range(200):
+            if k % 7 == 0:
+                inputs = bytes(rng.randrange(256) for _ in range(4))
+                for engine in (python, native):
+                    engine.memory.areas[Area.X][0:4] = inputs
+            python.scan()
+            native.scan()
+            assert native.memory.areas == python.memory.areas, k
+            assert native.call_states() == python.call_states(), k
+            if monitored:
+                assert native.power_flow == python.power_flow
+    python, native = _pair(binary, False, 10, every_scan=False, callbacks=True)
+    for _ in range(10):
+        inputs, ms = bytes(rng.randrange(256) for _ in range(4)), rng.choice((50, 700, 3000))
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0:4] = inputs
+            engine.step(ms)
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
