@@ -187,9 +187,35 @@ ROWS: dict[str, tuple[str, ...]] = {
 _PLAIN = ("RST", "BSET", "BRST", "DBSET", "DBRST")  # no pulse form
 
 
-def _packed(rows: dict[str, tuple[str, ...]], pulse: bool) -> dict[str, str]:
+# floating point: the singles every float row also reads (D30 ...): infinities, a
+# signalling and a quiet NaN, -0, the smallest denormal, the largest single, 1.0
+SINGLES = "".join(f"LD M1000\nDMOV H{bits} D{30 + 2 * k}\n" for k, bits in enumerate((
+    "7F800000", "FF800000", "7F800001", "FFC00123", "80000000", "00000001", "7F7FFFFF",
+    "3F800000")))
+FLOATS: dict[str, tuple[str, ...]] = {
+    "DECMP": ("DECMP D0 D2 M0", "DECMP D30 D32 M10", "DECMP K5 D4 M20", "DECMP D34 D34 M30",
+              "DECMP D36 K0 Y0", "DECMP D38 D40 M40"),
+    "DEZCP": ("DEZCP D0 D2 D4 M0", "DEZCP K-5 K5 D30 M10", "DEZCP D32 D30 D6 M20",
+              "DEZCP D34 D36 D38 M30", "DEZCP D40 D42 D44 M40"),
+    "FLT": ("FLT D0 D20", "FLT C200 D22", "FLT K-32768 D24", "FLT D1 C0"),
+    "DFLT": ("DFLT D0 D20", "DFLT C200 D22", "DFLT K2147483647 D24", "DFLT K16777217 D26",
+             "DFLT D2 C201"),
+    "DEMOV": ("DEMOV D0 D20", "DEMOV D30 D22", "DEMOV D32 D24", "DEMOV D34 D26",
+              "DEMOV D36 D28", "DEMOV K-7 D50", "DEMOV D38 D52", "DEMOV C200 D54",
+              "DEMOV D40 D56", "DEMOV D42 D58", "DEMOV D44 D60"),
+}
+_SIGNS = ("=", ">", "<", "<>", "<=", ">=")
+FLOAT_CONTACTS = SINGLES + "".join(
+    f"LD X{k}\nFAND{t} D{2 * k} D{30 + 2 * k}\nOUT Y{k}\n"
+    f"FLD{t} D{2 * k} K{k - 2}\nOUT M{k}\n"
+    f"LD X{k}\nFOR{t} D34 D{2 * k}\nOUT M1{k}\n"
+    f"LD X{k}\nFLD{t} D{30 + 2 * k} D{32 + 2 * k}\nORB\nOUT M2{k}\n"
+    f"FLD{t} D{2 * k} D{2 * k}\nOUT M3{k}\n" for k, t in enumerate(_SIGNS))
+
+
+def _packed(rows: dict[str, tuple[str, ...]], pulse: bool, prefix: str = "") -> dict[str, str]:
     """Programs of up to 16 gated lines (X0-X17), the rows in order (`pulse`: their P forms,
-    for the rows that have one), by the names of the rows they hold."""
+    for the rows that have one), by the names of the rows they hold; `prefix` before each."""
     programs: dict[str, str] = {}
     names: list[str] = []
     lines: list[str] = []
@@ -197,14 +223,15 @@ def _packed(rows: dict[str, tuple[str, ...]], pulse: bool) -> dict[str, str]:
         if pulse and name in _PLAIN:
             continue
         if names and (not name or len(lines) + len(own) > 16):
-            programs[",".join(names) + ("/P" if pulse else "")] = _gated(*lines)
+            programs[",".join(names) + ("/P" if pulse else "")] = prefix + _gated(*lines)
             names, lines = [], []
         names.append(name)
         lines += [line.replace(f"{name} ", f"{name}P ", 1) if pulse else line for line in own]
     return programs
 
 
-PROGRAMS = {**_packed(ROWS, False), **_packed(ROWS, True)}
+PROGRAMS = {**_packed(ROWS, False), **_packed(ROWS, True), **_packed(FLOATS, False, SINGLES),
+            **_packed(FLOATS, True, SINGLES), "F contacts": FLOAT_CONTACTS}
 
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])

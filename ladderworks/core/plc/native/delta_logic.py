@@ -25,7 +25,8 @@ Write = Callable[[FunctionText, str], None]
 FAMILY_MODULES = ("ladderworks.core.plc.functions.delta_logic",
                   "ladderworks.core.plc.functions.delta_math",
                   "ladderworks.core.plc.functions.delta_blocks",
-                  "ladderworks.core.plc.functions.delta_words")
+                  "ladderworks.core.plc.functions.delta_words",
+                  "ladderworks.core.plc.functions.delta_float")
 
 
 def reader(operand: object, wide: bool) -> Read:

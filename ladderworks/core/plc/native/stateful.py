@@ -38,6 +38,7 @@ from ladderworks.core.plc.native import (
     builtins,
     contacts,
     delta_blocks,
+    delta_float,
     delta_logic,
     delta_timers,
     fatek,
@@ -383,9 +384,11 @@ builtins.EMITTERS.update(fatek.EMITTERS)
 builtins.EMITTERS.update(delta_timers.EMITTERS)
 builtins.EMITTERS.update(delta_logic.EMITTERS)
 builtins.EMITTERS.update(delta_blocks.EMITTERS)
+builtins.EMITTERS.update(delta_float.EMITTERS)
 words.PULSES.update(words32.PULSES)
 words.PULSES.update(delta_logic.PULSES)
 words.PULSES.update(delta_blocks.PULSES)
+words.PULSES.update(delta_float.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
