@@ -24,7 +24,6 @@ from ladderworks.core.plc.engine import ScanEngine
 from tests.core.plc.test_native_functions import (
     DATA,
     _byte,
-    _gated,
     _run,
     _scans,
 )
@@ -184,7 +183,7 @@ ROWS: dict[str, tuple[str, ...]] = {
     "MEAN": ("MEAN D0 D20 K3", "MEAN C199 D21 K3", "MEAN D0 D22 K1", "MEAN K-7 D23 K4"),
     "DMEAN": ("DMEAN D0 D20 K3", "DMEAN C200 D22 K2"),
 }
-_PLAIN = ("RST", "BSET", "BRST", "DBSET", "DBRST")  # no pulse form
+_PLAIN = ("RST", "BSET", "BRST", "DBSET", "DBRST", "BOUT", "DBOUT")  # no pulse form
 
 
 # floating point: the singles every float row also reads (D30 ...): infinities, a
@@ -204,6 +203,25 @@ FLOATS: dict[str, tuple[str, ...]] = {
               "DEMOV D36 D28", "DEMOV K-7 D50", "DEMOV D38 D52", "DEMOV C200 D54",
               "DEMOV D40 D56", "DEMOV D42 D58", "DEMOV D44 D60"),
 }
+EXTRA: dict[str, tuple[str, ...]] = {
+    "BOUT": ("BOUT D0 K3", "BOUT D1 D2", "BOUT C200 K15"),
+    "DBOUT": ("DBOUT D0 K20", "DBOUT C200 D2", "DBOUT C0 K3"),
+    "SCAL": ("SCAL D0 K500 K-3 D20", "SCAL D1 D2 D3 D21", "SCAL C200 K1000 K0 D22"),
+    "SCLP": ("SCLP D0 D4 D20", "SCLP D1 D8 D21", "SCLP K5 D40 D22"),
+    "SQR": ("SQR D0 D20", "SQR C200 D21", "SQR K0 D22", "SQR K32767 D23", "SQR K16 D24",
+            "SQR K15 D25"),
+    "DSQR": ("DSQR D0 D20", "DSQR C200 D22", "DSQR K2147483647 D24", "DSQR D2 C0",
+             "DSQR K1073676289 D26", "DSQR K1073676288 D28"),
+    "SMOV": ("SMOV D0 K4 K2 D20 K3", "SMOV K1234 K4 K4 D21 K4", "SMOV D1 K2 K1 D2 K1",
+             "SMOV C200 K3 K2 D3 K2"),
+}
+# NOP/WDT, shown-only rows (PID, a contact LD&), a step ladder's SET/OUT Sn, CJP and CALLP
+OTHERS = ("LD X0\nNOP\nOUT Y0\nLD X1\nWDT\nOUT Y1\nLD X2\nPID D0 D1 D2 D3\n"
+          "LD& D0 D1\nOUT Y2\nLD X3\nAND& D2 D3\nOUT Y3\nLD X4\nOR& D4 D5\nOUT Y4\n"
+          "LD X5\nCJP P1\nLD M1000\nINC D20\nP1\nLD X6\nCALLP P2\n"
+          "LD M1002\nSET S0\nSTL S0\nOUT Y5\nLD X7\nSET S20\nSTL S20\nOUT Y6\n"
+          "LD X10\nSET S21\nSTL S21\nLD X11\nOUT S0\nRET\nFEND\nP2\nLD M1000\nINC D21\n"
+          "SRET\n")
 _SIGNS = ("=", ">", "<", "<>", "<=", ">=")
 FLOAT_CONTACTS = SINGLES + "".join(
     f"LD X{k}\nFAND{t} D{2 * k} D{30 + 2 * k}\nOUT Y{k}\n"
@@ -213,8 +231,17 @@ FLOAT_CONTACTS = SINGLES + "".join(
     f"FLD{t} D{2 * k} D{2 * k}\nOUT M3{k}\n" for k, t in enumerate(_SIGNS))
 
 
+_INPUTS = [f"X{k}" for k in range(8)] + [f"X1{k}" for k in range(8)]
+
+
+def _gated(*lines: str) -> str:
+    """Each instruction under an input of its own: X0-X17, then their inverses (LDI)."""
+    return "".join(f"{'LD' if k < 16 else 'LDI'} {_INPUTS[k % 16]}\n{line}\n"
+                   for k, line in enumerate(lines))
+
+
 def _packed(rows: dict[str, tuple[str, ...]], pulse: bool, prefix: str = "") -> dict[str, str]:
-    """Programs of up to 16 gated lines (X0-X17), the rows in order (`pulse`: their P forms,
+    """Programs of up to 32 gated lines (`_gated`), the rows in order (`pulse`: their P forms,
     for the rows that have one), by the names of the rows they hold; `prefix` before each."""
     programs: dict[str, str] = {}
     names: list[str] = []
@@ -222,7 +249,7 @@ def _packed(rows: dict[str, tuple[str, ...]], pulse: bool, prefix: str = "") -> 
     for name, own in [*rows.items(), ("", ())]:
         if pulse and name in _PLAIN:
             continue
-        if names and (not name or len(lines) + len(own) > 16):
+        if names and (not name or len(lines) + len(own) > 32):
             programs[",".join(names) + ("/P" if pulse else "")] = prefix + _gated(*lines)
             names, lines = [], []
         names.append(name)
@@ -231,7 +258,8 @@ def _packed(rows: dict[str, tuple[str, ...]], pulse: bool, prefix: str = "") -> 
 
 
 PROGRAMS = {**_packed(ROWS, False), **_packed(ROWS, True), **_packed(FLOATS, False, SINGLES),
-            **_packed(FLOATS, True, SINGLES), "F contacts": FLOAT_CONTACTS}
+            **_packed(FLOATS, True, SINGLES), "F contacts": FLOAT_CONTACTS,
+            **_packed(EXTRA, False), **_packed(EXTRA, True), "others": OTHERS}
 
 
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])

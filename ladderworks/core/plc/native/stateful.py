@@ -38,6 +38,7 @@ from ladderworks.core.plc.native import (
     builtins,
     contacts,
     delta_blocks,
+    delta_extra,
     delta_float,
     delta_logic,
     delta_timers,
@@ -85,6 +86,7 @@ StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], s
 # a module adds its own dict with one `ROWS.update(module.STATEFUL)` line below
 ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
 ROWS.update(delta_timers.STATEFUL)
+ROWS.update(delta_extra.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
@@ -385,10 +387,12 @@ builtins.EMITTERS.update(delta_timers.EMITTERS)
 builtins.EMITTERS.update(delta_logic.EMITTERS)
 builtins.EMITTERS.update(delta_blocks.EMITTERS)
 builtins.EMITTERS.update(delta_float.EMITTERS)
+builtins.EMITTERS.update(delta_extra.EMITTERS)
 words.PULSES.update(words32.PULSES)
 words.PULSES.update(delta_logic.PULSES)
 words.PULSES.update(delta_blocks.PULSES)
 words.PULSES.update(delta_float.PULSES)
+words.PULSES.update(delta_extra.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
