@@ -214,6 +214,11 @@ EXTRA: dict[str, tuple[str, ...]] = {
              "DSQR K1073676289 D26", "DSQR K1073676288 D28"),
     "SMOV": ("SMOV D0 K4 K2 D20 K3", "SMOV K1234 K4 K4 D21 K4", "SMOV D1 K2 K1 D2 K1",
              "SMOV C200 K3 K2 D3 K2"),
+    # special modules' CRs (TO writes them, FROM reads them; a CR past #99: the error)
+    "TO": ("TO K0 K1 K0 K1", "TO K0 K5 D0 K4", "TO K7 K97 D1 K4"),
+    "FROM": ("FROM K0 K5 D20 K2", "FROM K7 K98 D22 K3", "FROM K0 K1 D25 K1"),
+    "DTO": ("DTO K0 K20 D0 K2", "DTO K2 K97 D2 K2", "DTO K3 K0 K-5 K1"),
+    "DFROM": ("DFROM K0 K20 D30 K2", "DFROM K2 K97 D34 K2", "DFROM K3 K0 C200 K1"),
 }
 # NOP/WDT, shown-only rows (PID, a contact LD&), a step ladder's SET/OUT Sn, CJP and CALLP
 OTHERS = ("LD X0\nNOP\nOUT Y0\nLD X1\nWDT\nOUT Y1\nLD X2\nPID D0 D1 D2 D3\n"

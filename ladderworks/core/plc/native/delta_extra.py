@@ -8,12 +8,14 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+from ladderworks.core.address import Address
 from ladderworks.core.compiler import implementations
 from ladderworks.core.dialects.delta.rows_extra import ACTIONS
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.delta_blocks import word_after
+from ladderworks.core.plc.functions.delta_modules import register_of
 from ladderworks.core.plc.functions.dvp_data import M1020, width_of
-from ladderworks.core.plc.native.builtins import Emitter
+from ladderworks.core.plc.native.builtins import Emitter, _load
 from ladderworks.core.plc.native.delta_logic import (
     checked,
     error,
@@ -180,6 +182,53 @@ def _digit_move(params: Sequence[object]) -> Body:
     return body
 
 
+def _register(place: Address, width: int) -> Callable[[FunctionText], str]:
+    """A CR read as `delta_modules` reads it: 2 bytes unsigned, 4 signed."""
+    kind = "sext" if width == 4 else "zext"
+    return lambda f: f.value(f"{kind} i{8 * width} {_load(f, place, width)} to i64")
+
+
+def _to_register(place: Address, width: int) -> Callable[[FunctionText, str], None]:
+    return lambda f, value: _write(f, place, value, width)
+
+
+def _transfer(wide: bool, reading: bool) -> Prepare:
+    """FROM / TO m1 m2 D n (constants): n words (DFROM/DTO: pairs) between module m1's CRs
+    and D.., as `delta_modules._transfer` finds them (a CR past #99: the error after the
+    words before it; FROM stops at the last D; TO reads S itself past its last)."""
+    def prepare(params: Sequence[object]) -> Body:
+        module, first, data, count = params
+        m1, m2, n = _constant(module), _constant(first), _constant(count)
+        step, width, failed = (2, 4, False) if wide else (1, 2, False)
+        moves: list[tuple[Callable[[FunctionText], str], Callable[[FunctionText, str], None]]] = []
+        if n > 512:
+            raise _Refused
+        for k in range(max(n, 0)):
+            place = register_of(m1, m2 + k * step)
+            if place is None or (wide and register_of(m1, m2 + k * step + 1) is None):
+                failed = True
+                break
+            device = word_after(data, k * step) if isinstance(data, Address) else None
+            register = _place(place, width)
+            if reading:
+                if device is None:
+                    break
+                moves.append((_register(register, width), writer(device, wide)))
+            else:
+                source = device if device is not None else data
+                moves.append((reader(source, wide), _to_register(register, width)))
+
+        def body(f: FunctionText) -> None:
+            for read, write in moves:
+                write(f, read(f))
+            if failed:
+                error(f)
+
+        return body
+
+    return prepare
+
+
 def _bit_out(wide: bool) -> Emitter:
     """BOUT / DBOUT D n: bit n of D follows the input (n out of range: the error)."""
     def emit(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
@@ -217,7 +266,9 @@ def _edge(b: Block, impl: FunctionImpl, params: Sequence[object],
 
 PREPARE: dict[str, Prepare] = {
     "step-set": _step, "step-out": _step, "scale": _scale, "scale-table": _scale_table,
-    "root": _root(False), "root32": _root(True), "digit-move": _digit_move}
+    "root": _root(False), "root32": _root(True), "digit-move": _digit_move,
+    "from": _transfer(False, True), "from32": _transfer(True, True),
+    "to": _transfer(False, False), "to32": _transfer(True, False)}
 
 
 def _own() -> tuple[dict[FunctionImpl, Emitter],

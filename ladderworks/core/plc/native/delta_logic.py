@@ -26,7 +26,8 @@ FAMILY_MODULES = ("ladderworks.core.plc.functions.delta_logic",
                   "ladderworks.core.plc.functions.delta_math",
                   "ladderworks.core.plc.functions.delta_blocks",
                   "ladderworks.core.plc.functions.delta_words",
-                  "ladderworks.core.plc.functions.delta_float")
+                  "ladderworks.core.plc.functions.delta_float",
+                  "ladderworks.core.plc.functions.delta_modules")
 
 
 def reader(operand: object, wide: bool) -> Read:
