@@ -197,6 +197,11 @@ FLOATS: dict[str, tuple[str, ...]] = {
     "DEZCP": ("DEZCP D0 D2 D4 M0", "DEZCP K-5 K5 D30 M10", "DEZCP D32 D30 D6 M20",
               "DEZCP D34 D36 D38 M30", "DEZCP D40 D42 D44 M40"),
     "FLT": ("FLT D0 D20", "FLT C200 D22", "FLT K-32768 D24", "FLT D1 C0"),
+    "INT": ("INT D0 D20", "INT D30 D21", "INT D32 D22", "INT D34 D23", "INT D36 D24",
+            "INT D42 D25", "INT D44 D26", "INT K-7 D27", "INT D2 C201", "INT K-32769 D28",
+            "INT K32768 D29", "INT K32767 D52"),
+    "DINT": ("DINT D0 D20", "DINT D30 D22", "DINT D34 D24", "DINT D42 D26", "DINT D44 D28",
+             "DINT C200 D50", "DINT D2 C0"),
     "DFLT": ("DFLT D0 D20", "DFLT C200 D22", "DFLT K2147483647 D24", "DFLT K16777217 D26",
              "DFLT D2 C201"),
     "DEMOV": ("DEMOV D0 D20", "DEMOV D30 D22", "DEMOV D32 D24", "DEMOV D34 D26",
@@ -310,3 +315,15 @@ def test_real_delta_programs_run_natively_as_in_python(name: str) -> None:
             engine.step(ms)
         assert native.memory.areas == python.memory.areas
         assert native.call_states() == python.call_states()
+
+
+@pytest.mark.parametrize("bits", ["7F800000", "FF800000", "7FC00000"])
+def test_int_of_an_infinity_or_a_nan_is_an_operation_error(bits: str) -> None:
+    """As any value out of range (it raised OverflowError in Python before): D kept."""
+    for backend in ("python", "native"):
+        engine = ScanEngine(_delta(f"LD M1000\nDMOV H{bits} D0\nMOV K7 D2\nLD X0\nINT D0 D2\n"
+                                   f"DINT D0 D4\n"), backend=backend)
+        engine.memory.areas[Area.X][0] = 1
+        engine.scan()
+        assert engine.memory.bit(DEVICES.bit("M1067")) == 1
+        assert engine.memory.read(DEVICES.word("D2")[0], 2) == 7

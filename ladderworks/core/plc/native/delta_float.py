@@ -1,14 +1,14 @@
 """Delta DVP floating point as native code where it is exact (core/plc/functions/
-delta_float.py): the contacts FLD= ... FOR>= (and their .STK rows), DECMP, DEZCP, FLT/DFLT and
-DEMOV with their pulse forms. A float operand is the single in a device pair made a double
-(`fpext`: exact) or a constant's double (exact: 32-bit), compared as Python compares them
-(ordered tests, `une` for <>: a NaN is unequal to all); FLT's integer is exact as a double
-and rounded once to a single (`fptrunc`, as Python's pack: below 2^31, never clamped); DEMOV
-works on the bits: an infinity becomes the largest single with its sign, a NaN is quieted
-(bit 22 on) with its payload kept, as Python's unpack and pack do on the machines it runs
-on (IEEE 754's conversions). Not native: INT/DINT (Python's math.trunc raises on an
-infinity), DEADD ... DEDIV (with two NaN operands the payload kept depends on the operand
-order the C compiler chose for CPython's float arithmetic) and the functions (libm)."""
+delta_float.py): the contacts FLD= ... FOR>= (and their .STK rows), DECMP, DEZCP, FLT/DFLT,
+INT/DINT and DEMOV with their pulse forms. A float operand is the single in a device pair
+made a double (`fpext`: exact) or a constant's double (exact: 32-bit), compared as Python
+compares them (ordered tests, `une` for <>: a NaN is unequal to all); FLT's integer is exact
+as a double and rounded once to a single (`fptrunc`, as Python's pack: below 2^31, never
+clamped); INT/DINT test the range on the double first; DEMOV works on the bits: an infinity
+becomes the largest single with its sign, a NaN is quieted (bit 22 on) with its payload
+kept, as Python's unpack and pack do (IEEE 754's conversions). Not native: DEADD ... DEDIV
+(with two NaN operands the payload kept depends on the operand order the C compiler chose
+for CPython's float arithmetic) and the functions (libm)."""
 
 from __future__ import annotations
 
@@ -19,12 +19,13 @@ from ladderworks.core.address import Address
 from ladderworks.core.instructions import Combine
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, delta_float, load_all
 from ladderworks.core.plc.functions.delta_float import bits_of
+from ladderworks.core.plc.functions.dvp_data import M1020
 from ladderworks.core.plc.native import words, words32
 from ladderworks.core.plc.native.builtins import Emitter
 from ladderworks.core.plc.native.contacts import _cells, _join
-from ladderworks.core.plc.native.delta_logic import rows, writer
+from ladderworks.core.plc.native.delta_logic import checked, rows, writer
 from ladderworks.core.plc.native.ir_text import FunctionText
-from ladderworks.core.plc.native.words import Prepare, _bit, _Refused, _results, _row
+from ladderworks.core.plc.native.words import Prepare, _bit, _place, _Refused, _results, _row
 
 Body = Callable[[FunctionText], None]
 _PREDICATES = {"eq": "oeq", "gt": "ogt", "lt": "olt", "ne": "une", "le": "ole", "ge": "oge"}
@@ -104,6 +105,35 @@ def _to_float(wide: bool) -> Prepare:
     return prepare
 
 
+def _integer(bits: int) -> Prepare:
+    """INT / DINT S D: the float toward zero; a NaN, an infinity or a value outside the
+    16 (32) bits: the error, D kept; M1020 when 0. The range is tested on the double
+    (trunc(x) >= -2^(b-1) is x > -2^(b-1) - 1, trunc(x) < 2^(b-1) is x < 2^(b-1): exact), so
+    `fptosi` only sees values it converts exactly."""
+    low, high = _double(-(2.0 ** (bits - 1)) - 1), _double(2.0 ** (bits - 1))
+
+    def prepare(params: Sequence[object]) -> Body:
+        source, output = params
+        read, store = _float(source), writer(output, bits == 32)
+        _place(M1020, 1)
+
+        def body(f: FunctionText) -> None:
+            number = read(f)
+            inside = f.value(f"and i1 {f.value(f'fcmp ogt double {number}, {low}')}, "
+                             f"{f.value(f'fcmp olt double {number}, {high}')}")
+
+            def run() -> None:
+                whole = f.value(f"fptosi double {number} to i64")
+                _bit(f, M1020, f.value(f"icmp eq i64 {whole}, 0"))
+                store(f, whole)
+
+            checked(f, f.value(f"xor i1 {inside}, true"), run)
+
+        return body
+
+    return prepare
+
+
 def _move(params: Sequence[object]) -> Body:
     """DEMOV S D: the single's bits (an infinity: the largest single; a NaN quieted)."""
     source, output = params
@@ -159,7 +189,8 @@ def _contacts() -> dict[FunctionImpl, Emitter]:
 
 
 PREPARE: dict[str, Prepare] = {"fcompare": _compare, "fzone": _zone, "float": _to_float(False),
-                               "float32": _to_float(True), "fmove": _move}
+                               "float32": _to_float(True), "fmove": _move,
+                               "integer": _integer(16), "integer32": _integer(32)}
 EMITTERS: dict[FunctionImpl, Emitter] = {
     **{impl: _row(p) for impl, p in rows(PREPARE, False).items()}, **_contacts()}
 PULSES = rows(PREPARE, True)
