@@ -53,7 +53,11 @@ TIMERS = ("LD X0\nTMR T0 D0\nLD X1\nTMR T1 K5\nLD X3\nOUT M1028\nLD X2\nTMR T64 
 # CNT: D and constant presets, a 32-bit C200 preset; DCNT up/down (M1200 on X3)
 COUNTERS = ("LD X0\nCNT C0 D0\nLD X1\nCNT C1 K3\nLD X2\nCNT C2 C201\nLD X3\nOUT M1200\n"
             "LD X3\nOUT M1201\nLD X4\nDCNT C200 D2\nLD X5\nDCNT C201 K-2\nLD X6\nRST C1\n"
-            "LD X7\nRST C200\nLD X10\nCNT C1 K32767\n")
+            "LD X7\nRST C200\nLD X10\nCNT C1 K32767\n"
+            # high-speed counters (their X inputs): one input, reset, start; U/D; A/B phases
+            "LD X11\nOUT M1235\nLD X10\nDCNT C235 K5\nLD X11\nDCNT C241 D4\n"
+            "LD X12\nDCNT C244 K-3\nLD X13\nDCNT C246 K2\nLD X14\nDCNT C247 D6\n"
+            "LD X15\nDCNT C251 K1\nLD X16\nDCNT C254 K0\nLD X17\nDCNT C250 C201\n")
 
 _timed = st.lists(st.tuples(st.lists(_byte, min_size=DATA, max_size=DATA),
                             st.integers(0, 255), st.integers(0, 255), st.booleans()),

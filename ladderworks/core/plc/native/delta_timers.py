@@ -1,19 +1,20 @@
 """Delta DVP's TMR, CNT and DCNT as native code (core/plc/functions/dvp_timers.py,
 dvp_counters.py), each with its state in a block (state_block.py: TMR's "at", "wake",
 "running" and "ms" in ELAPSED; a counter's "prev"), and RST of a T, C or D device (no state).
-A high-speed counter (C235-C255: dvp_high_speed) and a parameter the Python code would take
-otherwise (a timer or counter not of its letter, data past its area) call back."""
+A high-speed counter (C235-C255: dvp_high_speed) keeps its inputs' last values ("x", "y").
+A parameter the Python code would take otherwise (a timer or counter not of its letter, data
+past its area) calls back."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
 from ladderworks.core.address import Address
-from ladderworks.core.dialects.delta import DEVICES, M1028, M1200, WIDE_COUNTERS, C, T
+from ladderworks.core.dialects.delta import DEVICES, M1028, M1200, WIDE_COUNTERS, C, T, X
 from ladderworks.core.dialects.delta.tables import timer_base_ms
 from ladderworks.core.plc.functions import NEVER, FunctionImpl, dvp_counters, dvp_timers
 from ladderworks.core.plc.functions.dvp_data import bit_after
-from ladderworks.core.plc.functions.dvp_high_speed import TABLE
+from ladderworks.core.plc.functions.dvp_high_speed import ONE_INPUT, TABLE, UP_DOWN, HighSpeed
 from ladderworks.core.plc.native import layout, words, words32
 from ladderworks.core.plc.native.builtins import Emitter, _load, _store, _when
 from ladderworks.core.plc.native.ir_text import FunctionText
@@ -22,10 +23,14 @@ from ladderworks.core.plc.native.state_block import (
     CHANGED,
     ELAPSED,
     HAS_AT,
+    HAS_HX,
+    HAS_HY,
     HAS_MS,
     HAS_PREV,
     HAS_RUNNING,
     HAS_WAKE,
+    HX,
+    HY,
     PREV,
     RUNNING,
     WAKE,
@@ -170,27 +175,77 @@ def _cnt(b: Block, impl: FunctionImpl, params: Sequence[object],
 
 def _dcnt(b: Block, impl: FunctionImpl, params: Sequence[object],
           inputs: list[str]) -> str | None:
-    """DCNT Cn SV (C200-C234): +1 or -1 (M1200+n-200) at a rising input, 32-bit wrapping."""
+    """DCNT Cn SV: C200-C234 +1 or -1 (M1200+n-200) at a rising input; C235-C255 count their
+    X inputs (`_high_speed`); 32-bit wrapping; the contact: value >= SV."""
     counter, preset = params
     number = _number(counter, C)
-    if number in TABLE or number < WIDE_COUNTERS:
+    if number < WIDE_COUNTERS:
         raise _Refused
     assert isinstance(counter, Address)
     place, contact = _place(counter, 4), C.bit_address(number)
     _place(contact, 1)
-    down_at = _place(bit_after(M1200, number - WIDE_COUNTERS), 1)
-    assert down_at.bit is not None
+    flag = _place(bit_after(M1200, number - WIDE_COUNTERS), 1)
     target_of = words32._source(preset)
     f = b.f
-    rise = _rising(b, f.truth(inputs[-1]))
-    down = f.truth(f.bit(down_at.area, down_at.byte, down_at.bit, False))
-    step = f.value(f"select i1 {rise}, i32 {f.value(f'select i1 {down}, i32 -1, i32 1')}, "
-                   f"i32 0")
-    value = f.value(f"add i32 {_load(f, place, 4)}, {step}")
+    act = f.truth(inputs[-1])
+    if number in TABLE:
+        value = _high_speed(b, TABLE[number], flag, act, _load(f, place, 4))
+    else:
+        down = f.truth(f.bit(flag.area, flag.byte, flag.bit or 0, False))
+        step = f.value(f"select i1 {_rising(b, act)}, "
+                       f"i32 {f.value(f'select i1 {down}, i32 -1, i32 1')}, i32 0")
+        value = f.value(f"add i32 {_load(f, place, 4)}, {step}")
     _store(f, place, 4, value)
     wide = f.value(f"sext i32 {value} to i64")
     _bit(f, contact, f.value(f"icmp sge i64 {wide}, {target_of(f)}"))
     return inputs[-1]
+
+
+def _x(f: FunctionText, number: int | None) -> str:
+    """An X input of a high-speed counter (none: off), an i1."""
+    if number is None:
+        return "false"
+    place = _place(X.bit_address(number), 1)
+    return f.truth(f.bit(place.area, place.byte, place.bit or 0, False))
+
+
+def _high_speed(b: Block, counter: HighSpeed, flag: Address, act: str, current: str) -> str:
+    """`dvp_high_speed.step`: the inputs' last values kept as "x" and "y"; the new value."""
+    f = b.f
+    first, second = _x(f, counter.first), _x(f, counter.second)
+    flags = b.flags()
+    was_x = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HX}')}, 0")
+    was_y = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HY}')}, 0")
+    rise_first = f.value(f"and i1 {first}, {f.value(f'xor i1 {was_x}, true')}")
+    rise_second = f.value(f"and i1 {second}, {f.value(f'xor i1 {was_y}, true')}")
+    changed_second = f.value(f"xor i1 {second}, {was_y}")
+    kept = f.value(f"or i32 {f.value(f'and i32 {flags}, {~(HX | HY)}')}, {HAS_HX | HAS_HY}")
+    with_x = f.value(f"or i32 {kept}, {f.value(f'select i1 {first}, i32 {HX}, i32 0')}")
+    b.set_flags(flags, f.value(f"or i32 {with_x}, "
+                               f"{f.value(f'select i1 {second}, i32 {HY}, i32 0')}"))
+    reset = _x(f, counter.reset)
+    counting = f.value(f"and i1 {f.value(f'xor i1 {reset}, true')}, {act}")
+    if counter.start is not None:
+        counting = f.value(f"and i1 {counting}, {_x(f, counter.start)}")
+    if counter.kind == ONE_INPUT:
+        down = f.truth(f.bit(flag.area, flag.byte, flag.bit or 0, False))
+        delta = f.value(f"select i1 {rise_first}, "
+                        f"i32 {f.value(f'select i1 {down}, i32 -1, i32 1')}, i32 0")
+    elif counter.kind == UP_DOWN:
+        delta = f.value(f"sub i32 {f.value(f'zext i1 {rise_first} to i32')}, "
+                        f"{f.value(f'zext i1 {rise_second} to i32')}")
+    else:  # A's edge with B steady: B off up, B on down
+        steady = f.value(f"and i1 {rise_first}, {f.value(f'xor i1 {changed_second}, true')}")
+        delta = f.value(f"select i1 {steady}, "
+                        f"i32 {f.value(f'select i1 {second}, i32 -1, i32 1')}, i32 0")
+    delta = f.value(f"select i1 {counting}, i32 {delta}, i32 0")
+    if counter.kind != ONE_INPUT:  # the direction shown when it counted
+        moved = f.value(f"icmp ne i32 {delta}, 0")
+        old = f.truth(f.bit(flag.area, flag.byte, flag.bit or 0, False))
+        _bit(f, flag, f.value(f"select i1 {moved}, i1 {f.value(f'icmp slt i32 {delta}, 0')}, "
+                              f"i1 {old}"))
+    counted = f.value(f"add i32 {current}, {delta}")
+    return f.value(f"select i1 {reset}, i32 0, i32 {counted}")
 
 
 def _guarded(emit: StatefulEmitter) -> StatefulEmitter:

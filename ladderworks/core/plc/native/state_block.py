@@ -30,6 +30,8 @@ HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "e
 CHANGED = 1 << 15
 # Delta's TMR: "running", and "ms" (the time short of a tick, at ELAPSED: a time value)
 HAS_RUNNING, RUNNING, HAS_MS = 1 << 24, 1 << 25, 1 << 26
+# Delta's high-speed counters: their inputs at the last execution ("x", "y")
+HAS_HX, HX, HAS_HY, HY = 1 << 27, 1 << 28, 1 << 29, 1 << 30
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
 class Block:
@@ -130,6 +132,10 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
         state["value"] = _get64(words, base + ELAPSED)
     if flags & HAS_RUNNING:
         state["running"] = bool(flags & RUNNING)
+    if flags & HAS_HX:
+        state["x"] = bool(flags & HX)
+    if flags & HAS_HY:
+        state["y"] = bool(flags & HY)
     if flags & HAS_MS:
         state["ms"] = _get64(words, base + ELAPSED)
 
@@ -147,7 +153,8 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
                     flags |= ELAPSED_SET
     for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1), ("act", HAS_ACT, ACT),
                                 ("prev", HAS_PREV, PREV), ("en", HAS_EN, EN),
-                                ("fo0", HAS_FO0, FO0), ("running", HAS_RUNNING, RUNNING)):
+                                ("fo0", HAS_FO0, FO0), ("running", HAS_RUNNING, RUNNING),
+                                ("x", HAS_HX, HX), ("y", HAS_HY, HY)):
         if key in state:
             flags |= has | (value_bit if state[key] else 0)
     if "value" in state:
