@@ -229,12 +229,15 @@ EXTRA: dict[str, tuple[str, ...]] = {
     "DTO": ("DTO K0 K20 D0 K2", "DTO K2 K97 D2 K2", "DTO K3 K0 K-5 K1"),
     "DFROM": ("DFROM K0 K20 D30 K2", "DFROM K2 K97 D34 K2", "DFROM K3 K0 C200 K1"),
 }
-# NOP/WDT, shown-only rows (PID, a contact LD&), a step ladder's SET/OUT Sn, CJP and CALLP
+# NOP/WDT, shown-only rows (PID, a contact LD&), a step ladder's SET/OUT Sn, CJP and CALLP,
+# nested FOR/NEXT
 OTHERS = ("LD X0\nNOP\nOUT Y0\nLD X1\nWDT\nOUT Y1\nLD X2\nPID D0 D1 D2 D3\n"
           "LD& D0 D1\nOUT Y2\nLD X3\nAND& D2 D3\nOUT Y3\nLD X4\nOR& D4 D5\nOUT Y4\n"
           "LD X5\nCJP P1\nLD M1000\nINC D20\nP1\nLD X6\nCALLP P2\n"
           "LD M1002\nSET S0\nSTL S0\nOUT Y5\nLD X7\nSET S20\nSTL S20\nOUT Y6\n"
-          "LD X10\nSET S21\nSTL S21\nLD X11\nOUT S0\nRET\nFEND\nP2\nLD M1000\nINC D21\n"
+          "LD X10\nSET S21\nSTL S21\nLD X11\nOUT S0\nRET\n"
+          "FOR K3\nLD X12\nINC D22\nFOR K2\nLD X13\nINC D23\nNEXT\nNEXT\n"
+          "FEND\nP2\nLD M1000\nINC D21\n"
           "SRET\n")
 _SIGNS = ("=", ">", "<", "<>", "<=", ">=")
 FLOAT_CONTACTS = SINGLES + "".join(

@@ -1,8 +1,9 @@
 """Delta DVP's remaining small rows as native code: NOP/WDT, the shown-only rows (a box
 passes its input on, an LD/AND contact never conducts: compiler/implementations.py), a step's
 SET/OUT Sn, BOUT/DBOUT, CJP/CALLP's edge (its input kept as "prev" in a state block), SCAL,
-SCLP (16-bit), SQR/DSQR (an exact integer square root, digit by digit) and SMOV, with their
-pulse forms, made as delta_logic.py makes its rows."""
+SCLP (16-bit), SQR/DSQR (an exact integer square root, digit by digit), SMOV, FROM/TO and
+NEXT (its runs left in a state block), with their pulse forms, made as delta_logic.py makes
+its rows."""
 
 from __future__ import annotations
 
@@ -15,6 +16,7 @@ from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
 from ladderworks.core.plc.functions.delta_blocks import word_after
 from ladderworks.core.plc.functions.delta_modules import register_of
 from ladderworks.core.plc.functions.dvp_data import M1020, width_of
+from ladderworks.core.plc.native import words
 from ladderworks.core.plc.native.builtins import Emitter, _load
 from ladderworks.core.plc.native.delta_logic import (
     checked,
@@ -26,7 +28,7 @@ from ladderworks.core.plc.native.delta_logic import (
 )
 from ladderworks.core.plc.native.delta_timers import StatefulEmitter, _rising
 from ladderworks.core.plc.native.ir_text import FunctionText
-from ladderworks.core.plc.native.state_block import Block
+from ladderworks.core.plc.native.state_block import CHANGED, ELAPSED, HAS_LEFT, Block
 from ladderworks.core.plc.native.words import Prepare, _bit, _place, _Refused, _row, _write
 
 Body = Callable[[FunctionText], None]
@@ -264,6 +266,32 @@ def _edge(b: Block, impl: FunctionImpl, params: Sequence[object],
     return b.f.value(f"zext i1 {_rising(b, b.f.truth(inputs[-1]))} to i8")
 
 
+def _loop_next(b: Block, impl: FunctionImpl, params: Sequence[object],
+               inputs: list[str]) -> str | None:
+    """NEXT of FOR n: the runs left ("left"; none left: n read again) less one; W1 while
+    another run is due."""
+    if len(params) != 1:
+        return None
+    try:
+        count = words._source(params[0])
+    except _REFUSED:
+        return None
+    f = b.f
+    flags = b.flags()
+    has_left = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_LEFT}')}, 0")
+    left = f.value(f"select i1 {has_left}, i64 {b.load64(ELAPSED)}, i64 0")
+    again = f.value(f"select i1 {f.value(f'icmp sle i64 {left}, 0')}, i64 {count(f)}, "
+                    f"i64 {left}")
+    now = f.value(f"sub i64 {again}, 1")
+    more = f.value(f"icmp sgt i64 {now}, 0")
+    kept = f.value(f"select i1 {more}, i64 {now}, i64 0")
+    b.store64(ELAPSED, kept)
+    moved = f.value(f"icmp ne i64 {kept}, {left}")
+    b.set_flags(flags, f.value(f"or i32 {f.value(f'or i32 {flags}, {HAS_LEFT}')}, "
+                               f"{f.value(f'select i1 {moved}, i32 {CHANGED}, i32 0')}"))
+    return f.value(f"zext i1 {more} to i8")
+
+
 PREPARE: dict[str, Prepare] = {
     "step-set": _step, "step-out": _step, "scale": _scale, "scale-table": _scale_table,
     "root": _root(False), "root32": _root(True), "digit-move": _digit_move,
@@ -287,6 +315,8 @@ def _own() -> tuple[dict[FunctionImpl, Emitter],
             emitters[impl] = _bit_out(action.endswith("32"))
         elif action == "edge":
             edges[impl] = ("dvp edge", _edge)
+        elif action == "loop-next":
+            edges[impl] = ("dvp next", _loop_next)
     return emitters, edges
 
 

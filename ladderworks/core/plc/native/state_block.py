@@ -4,7 +4,7 @@ dicts written from the words (`pull`) and the words from the dicts (`push`).
 
 The flags word says which keys the dict has and holds the booleans and a "changed" bit; three
 64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value` and Delta TMR's `ms` at
-`elapsed`). A block that
+`elapsed`, NEXT's `left` too). A block that
 changed in a scan puts its number in the changed list once (layout.DIRTY).
 """
 
@@ -30,6 +30,7 @@ HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "e
 CHANGED = 1 << 15
 # Delta's TMR: "running", and "ms" (the time short of a tick, at ELAPSED: a time value)
 HAS_RUNNING, RUNNING, HAS_MS = 1 << 24, 1 << 25, 1 << 26
+HAS_LEFT = 128  # Delta's NEXT: the runs left of its loop ("left", at ELAPSED)
 # Delta's high-speed counters: their inputs at the last execution ("x", "y")
 HAS_HX, HX, HAS_HY, HY = 1 << 27, 1 << 28, 1 << 29, 1 << 30
 _I32 = (-(1 << 31), (1 << 31) - 1)
@@ -138,6 +139,8 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
         state["y"] = bool(flags & HY)
     if flags & HAS_MS:
         state["ms"] = _get64(words, base + ELAPSED)
+    if flags & HAS_LEFT:
+        state["left"] = _get64(words, base + ELAPSED)
 
 
 def push(words: Any, base: int, state: dict[str, Any]) -> None:
@@ -163,6 +166,9 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
     if "ms" in state:
         flags |= HAS_MS
         _set64(words, base + ELAPSED, int(state["ms"]))
+    if "left" in state:
+        flags |= HAS_LEFT
+        _set64(words, base + ELAPSED, int(state["left"]))
     words[base] = flags
 
 
