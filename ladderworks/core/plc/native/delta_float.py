@@ -6,9 +6,10 @@ compares them (ordered tests, `une` for <>: a NaN is unequal to all); FLT's inte
 as a double and rounded once to a single (`fptrunc`, as Python's pack: below 2^31, never
 clamped); INT/DINT test the range on the double first; DEMOV works on the bits: an infinity
 becomes the largest single with its sign, a NaN is quieted (bit 22 on) with its payload
-kept, as Python's unpack and pack do (IEEE 754's conversions). Not native: DEADD ... DEDIV
-(with two NaN operands the payload kept depends on the operand order the C compiler chose
-for CPython's float arithmetic) and the functions (libm)."""
+kept, as Python's unpack and pack do (IEEE 754's conversions); DEADD ... DEDIV with a
+constant operand or one pair twice (`_arithmetic`). Not native: DEADD ... DEDIV of two
+different pairs (with two NaN operands the payload kept depends on the operand order the C
+compiler chose for CPython's float arithmetic) and the functions (libm)."""
 
 from __future__ import annotations
 
@@ -18,8 +19,8 @@ from collections.abc import Callable, Sequence
 from ladderworks.core.address import Address
 from ladderworks.core.instructions import Combine
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, delta_float, load_all
-from ladderworks.core.plc.functions.delta_float import bits_of
-from ladderworks.core.plc.functions.dvp_data import M1020
+from ladderworks.core.plc.functions.delta_float import LARGEST, SMALLEST, bits_of
+from ladderworks.core.plc.functions.dvp_data import M1020, M1021, M1022, M1067, M1068
 from ladderworks.core.plc.native import words, words32
 from ladderworks.core.plc.native.builtins import Emitter
 from ladderworks.core.plc.native.contacts import _cells, _join
@@ -28,13 +29,15 @@ from ladderworks.core.plc.native.ir_text import FunctionText
 from ladderworks.core.plc.native.words import Prepare, _bit, _place, _Refused, _results, _row
 
 Body = Callable[[FunctionText], None]
+def _double(number: float) -> str:
+    """An LLVM double literal of exactly `number` (a float literal too when it is a single)."""
+    return "0x" + struct.pack(">d", number).hex().upper()
+
+
 _PREDICATES = {"eq": "oeq", "gt": "ogt", "lt": "olt", "ne": "une", "le": "ole", "ge": "oge"}
 _I32 = (-(1 << 31), (1 << 31) - 1)
-
-
-def _double(number: float) -> str:
-    """An LLVM double literal of exactly `number`."""
-    return "0x" + struct.pack(">d", number).hex().upper()
+_LARGEST, _SMALLEST = _double(LARGEST), _double(SMALLEST)
+_NEGATIVE_LARGEST, _NEGATIVE_SMALLEST = _double(-LARGEST), _double(-SMALLEST)
 
 
 def _raw(operand: object) -> Callable[[FunctionText], str]:
@@ -134,6 +137,56 @@ def _integer(bits: int) -> Prepare:
     return prepare
 
 
+def _arithmetic(operator: str) -> Prepare:
+    """DEADD ... DEDIV with a constant operand (or one pair twice): at most one NaN operand,
+    whose quieted NaN the hardware passes on in either order (IEEE 754), so the double result
+    is Python's; rounded to a single (past the largest: the largest, with its sign) with
+    M1020-M1022 as `_arithmetic` sets them; a division by 0: the error. Two different pairs
+    (two NaNs: the payload kept is the first operand's of CPython's own code) call back."""
+    dividing = operator == "fdiv"
+
+    def prepare(params: Sequence[object]) -> Body:
+        s1, s2, output = params
+        if isinstance(s1, Address) and isinstance(s2, Address) and s1 != s2:
+            raise _Refused
+        first, second, store = _float(s1), _float(s2), writer(output, True)
+        for flag in (M1020, M1021, M1022, M1067, M1068):
+            _place(flag, 1)
+
+        def body(f: FunctionText) -> None:
+            a, b = first(f), second(f)
+
+            def run() -> None:
+                exact = f.value(f"{operator} double {a}, {b}")
+                over = f.value(f"or i1 {f.value(f'fcmp ogt double {exact}, {_LARGEST}')}, "
+                               f"{f.value(f'fcmp olt double {exact}, {_NEGATIVE_LARGEST}')}")
+                negative = f.value(f"fcmp olt double {exact}, 0.0")
+                largest = f.value(f"select i1 {negative}, float {_NEGATIVE_LARGEST}, "
+                                  f"float {_LARGEST}")
+                single = f.value(f"select i1 {over}, float {largest}, "
+                                 f"float {f.value(f'fptrunc double {exact} to float')}")
+                stored = f.value(f"fpext float {single} to double")
+                _bit(f, M1020, f.value(f"fcmp oeq double {stored}, 0.0"))
+                tiny = f.value(f"and i1 {f.value(f'fcmp ogt double {stored}, 0.0')}, "
+                               f"{f.value(f'fcmp olt double {stored}, {_SMALLEST}')}")
+                above = f.value(f"fcmp ogt double {stored}, {_NEGATIVE_SMALLEST}")
+                tiny_below = f.value(f"and i1 {f.value(f'fcmp olt double {stored}, 0.0')}, "
+                                     f"{above}")
+                _bit(f, M1021, f.value(f"or i1 {tiny}, {tiny_below}"))
+                _bit(f, M1022, over)
+                store(f, f.value(f"sext i32 {f.value(f'bitcast float {single} to i32')} "
+                                 f"to i64"))
+
+            if dividing:
+                checked(f, f.value(f"fcmp oeq double {b}, 0.0"), run)
+            else:
+                run()
+
+        return body
+
+    return prepare
+
+
 def _move(params: Sequence[object]) -> Body:
     """DEMOV S D: the single's bits (an infinity: the largest single; a NaN quieted)."""
     source, output = params
@@ -190,7 +243,9 @@ def _contacts() -> dict[FunctionImpl, Emitter]:
 
 PREPARE: dict[str, Prepare] = {"fcompare": _compare, "fzone": _zone, "float": _to_float(False),
                                "float32": _to_float(True), "fmove": _move,
-                               "integer": _integer(16), "integer32": _integer(32)}
+                               "integer": _integer(16), "integer32": _integer(32),
+                               "fadd": _arithmetic("fadd"), "fsubtract": _arithmetic("fsub"),
+                               "fmultiply": _arithmetic("fmul"), "fdivide": _arithmetic("fdiv")}
 EMITTERS: dict[FunctionImpl, Emitter] = {
     **{impl: _row(p) for impl, p in rows(PREPARE, False).items()}, **_contacts()}
 PULSES = rows(PREPARE, True)
