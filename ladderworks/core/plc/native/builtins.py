@@ -38,7 +38,8 @@ Emitter = Callable[[FunctionText, Sequence[object], list[str]], str | None]
 
 def declarations() -> list[str]:
     """The IR declarations the native functions use."""
-    return ["declare void @llvm.memmove.p0.p0.i64(ptr, ptr, i64, i1)"]
+    return ["declare void @llvm.memmove.p0.p0.i64(ptr, ptr, i64, i1)",
+            "declare double @llvm.sqrt.f64(double)"]
 
 
 def _fits(address: object, width: int) -> bool:

@@ -7,9 +7,10 @@ as a double and rounded once to a single (`fptrunc`, as Python's pack: below 2^3
 clamped); INT/DINT test the range on the double first; DEMOV works on the bits: an infinity
 becomes the largest single with its sign, a NaN is quieted (bit 22 on) with its payload
 kept, as Python's unpack and pack do (IEEE 754's conversions); DEADD ... DEDIV with a
-constant operand or one pair twice (`_arithmetic`). Not native: DEADD ... DEDIV of two
+constant operand or one pair twice (`_arithmetic`); DESQR (`llvm.sqrt`: correctly rounded,
+as C's sqrt). Not native: DEADD ... DEDIV of two
 different pairs (with two NaN operands the payload kept depends on the operand order the C
-compiler chose for CPython's float arithmetic) and the functions (libm)."""
+compiler chose for CPython's float arithmetic) and the other functions (libm's)."""
 
 from __future__ import annotations
 
@@ -137,6 +138,43 @@ def _integer(bits: int) -> Prepare:
     return prepare
 
 
+def _rounded(f: FunctionText, exact: str, store: Callable[[FunctionText, str], None]) -> None:
+    """`_result` of a double that is no NaN: rounded to a single (past the largest: the
+    largest, with its sign), M1020 zero, M1021 below the smallest normal, M1022 clamped."""
+    over = f.value(f"or i1 {f.value(f'fcmp ogt double {exact}, {_LARGEST}')}, "
+                   f"{f.value(f'fcmp olt double {exact}, {_NEGATIVE_LARGEST}')}")
+    negative = f.value(f"fcmp olt double {exact}, 0.0")
+    largest = f.value(f"select i1 {negative}, float {_NEGATIVE_LARGEST}, float {_LARGEST}")
+    single = f.value(f"select i1 {over}, float {largest}, "
+                     f"float {f.value(f'fptrunc double {exact} to float')}")
+    stored = f.value(f"fpext float {single} to double")
+    _bit(f, M1020, f.value(f"fcmp oeq double {stored}, 0.0"))
+    tiny = f.value(f"and i1 {f.value(f'fcmp ogt double {stored}, 0.0')}, "
+                   f"{f.value(f'fcmp olt double {stored}, {_SMALLEST}')}")
+    above = f.value(f"fcmp ogt double {stored}, {_NEGATIVE_SMALLEST}")
+    tiny_below = f.value(f"and i1 {f.value(f'fcmp olt double {stored}, 0.0')}, {above}")
+    _bit(f, M1021, f.value(f"or i1 {tiny}, {tiny_below}"))
+    _bit(f, M1022, over)
+    store(f, f.value(f"sext i32 {f.value(f'bitcast float {single} to i32')} to i64"))
+
+
+def _root(params: Sequence[object]) -> Body:
+    """DESQR S D: the correctly rounded root (`llvm.sqrt`, as C's sqrt); below 0 (-0 is
+    not) or a NaN: the error, D kept."""
+    source, output = params
+    read, store = _float(source), writer(output, True)
+    for flag in (M1020, M1021, M1022, M1067, M1068):
+        _place(flag, 1)
+
+    def body(f: FunctionText) -> None:
+        number = read(f)
+        bad = f.value(f"fcmp ult double {number}, 0.0")  # below 0, or a NaN
+        checked(f, bad, lambda: _rounded(
+            f, f.value(f"call double @llvm.sqrt.f64(double {number})"), store))
+
+    return body
+
+
 def _arithmetic(operator: str) -> Prepare:
     """DEADD ... DEDIV with a constant operand (or one pair twice): at most one NaN operand,
     whose quieted NaN the hardware passes on in either order (IEEE 754), so the double result
@@ -157,25 +195,7 @@ def _arithmetic(operator: str) -> Prepare:
             a, b = first(f), second(f)
 
             def run() -> None:
-                exact = f.value(f"{operator} double {a}, {b}")
-                over = f.value(f"or i1 {f.value(f'fcmp ogt double {exact}, {_LARGEST}')}, "
-                               f"{f.value(f'fcmp olt double {exact}, {_NEGATIVE_LARGEST}')}")
-                negative = f.value(f"fcmp olt double {exact}, 0.0")
-                largest = f.value(f"select i1 {negative}, float {_NEGATIVE_LARGEST}, "
-                                  f"float {_LARGEST}")
-                single = f.value(f"select i1 {over}, float {largest}, "
-                                 f"float {f.value(f'fptrunc double {exact} to float')}")
-                stored = f.value(f"fpext float {single} to double")
-                _bit(f, M1020, f.value(f"fcmp oeq double {stored}, 0.0"))
-                tiny = f.value(f"and i1 {f.value(f'fcmp ogt double {stored}, 0.0')}, "
-                               f"{f.value(f'fcmp olt double {stored}, {_SMALLEST}')}")
-                above = f.value(f"fcmp ogt double {stored}, {_NEGATIVE_SMALLEST}")
-                tiny_below = f.value(f"and i1 {f.value(f'fcmp olt double {stored}, 0.0')}, "
-                                     f"{above}")
-                _bit(f, M1021, f.value(f"or i1 {tiny}, {tiny_below}"))
-                _bit(f, M1022, over)
-                store(f, f.value(f"sext i32 {f.value(f'bitcast float {single} to i32')} "
-                                 f"to i64"))
+                _rounded(f, f.value(f"{operator} double {a}, {b}"), store)
 
             if dividing:
                 checked(f, f.value(f"fcmp oeq double {b}, 0.0"), run)
@@ -245,7 +265,8 @@ PREPARE: dict[str, Prepare] = {"fcompare": _compare, "fzone": _zone, "float": _t
                                "float32": _to_float(True), "fmove": _move,
                                "integer": _integer(16), "integer32": _integer(32),
                                "fadd": _arithmetic("fadd"), "fsubtract": _arithmetic("fsub"),
-                               "fmultiply": _arithmetic("fmul"), "fdivide": _arithmetic("fdiv")}
+                               "fmultiply": _arithmetic("fmul"), "fdivide": _arithmetic("fdiv"),
+                               "sqrt": _root}
 EMITTERS: dict[FunctionImpl, Emitter] = {
     **{impl: _row(p) for impl, p in rows(PREPARE, False).items()}, **_contacts()}
 PULSES = rows(PREPARE, True)
