@@ -8,12 +8,13 @@ clamped); INT/DINT test the range on the double first; DEMOV works on the bits: 
 becomes the largest single with its sign, a NaN is quieted (bit 22 on) with its payload
 kept, as Python's unpack and pack do (IEEE 754's conversions); DEADD ... DEDIV with a
 constant operand or one pair twice (`_arithmetic`); DESQR (`llvm.sqrt`: correctly rounded,
-as C's sqrt). Not native: DEADD ... DEDIV of two
+as C's sqrt); DRAD/DDEG (one product by CPython's constant). Not native: DEADD ... DEDIV of two
 different pairs (with two NaN operands the payload kept depends on the operand order the C
 compiler chose for CPython's float arithmetic) and the other functions (libm's)."""
 
 from __future__ import annotations
 
+import math
 import struct
 from collections.abc import Callable, Sequence
 
@@ -175,6 +176,27 @@ def _root(params: Sequence[object]) -> Body:
     return body
 
 
+def _scaled(factor: float) -> Prepare:
+    """DRAD / DDEG S D: S times pi/180 (180/pi), the constants CPython's math.radians and
+    math.degrees multiply by; a NaN: the error, D kept."""
+    literal = _double(factor)
+
+    def prepare(params: Sequence[object]) -> Body:
+        source, output = params
+        read, store = _float(source), writer(output, True)
+        for flag in (M1020, M1021, M1022, M1067, M1068):
+            _place(flag, 1)
+
+        def body(f: FunctionText) -> None:
+            exact = f.value(f"fmul double {read(f)}, {literal}")
+            checked(f, f.value(f"fcmp uno double {exact}, 0.0"),
+                    lambda: _rounded(f, exact, store))
+
+        return body
+
+    return prepare
+
+
 def _arithmetic(operator: str) -> Prepare:
     """DEADD ... DEDIV with a constant operand (or one pair twice): at most one NaN operand,
     whose quieted NaN the hardware passes on in either order (IEEE 754), so the double result
@@ -266,7 +288,8 @@ PREPARE: dict[str, Prepare] = {"fcompare": _compare, "fzone": _zone, "float": _t
                                "integer": _integer(16), "integer32": _integer(32),
                                "fadd": _arithmetic("fadd"), "fsubtract": _arithmetic("fsub"),
                                "fmultiply": _arithmetic("fmul"), "fdivide": _arithmetic("fdiv"),
-                               "sqrt": _root}
+                               "sqrt": _root, "radians": _scaled(math.pi / 180.0),
+                               "degrees": _scaled(180.0 / math.pi)}
 EMITTERS: dict[FunctionImpl, Emitter] = {
     **{impl: _row(p) for impl, p in rows(PREPARE, False).items()}, **_contacts()}
 PULSES = rows(PREPARE, True)
