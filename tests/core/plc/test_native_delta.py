@@ -169,7 +169,7 @@ ROWS: dict[str, tuple[str, ...]] = {
     "DBIN": ("DBIN D0 D20", "DBIN C200 D22", "DBIN H99999999 D24", "DBIN D2 C0"),
     # blocks of words and bits (counts are constants: a count in a register calls back)
     "ZRST": ("ZRST M0 M20", "ZRST D20 D25", "ZRST T0 T3", "ZRST C0 C2", "ZRST C199 C201",
-             "ZRST Y0 Y7", "ZRST D30 D28", "ZRST S0 S9"),
+             "ZRST Y0 Y7", "ZRST D30 D28", "ZRST S0 S9", "ZRST M3 M1500"),
     "BMOV": ("BMOV D0 D20 K4", "BMOV D0 D2 K5", "BMOV D4 D1 K5", "BMOV C200 D30 K2"),
     "FMOV": ("FMOV D0 D20 K3", "FMOV K-5 D30 K2", "FMOV C200 D40 K2"),
     "DFMOV": ("DFMOV D0 D20 K3", "DFMOV K-7 C200 K2", "DFMOV C200 D30 K2"),

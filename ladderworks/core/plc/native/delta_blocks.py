@@ -2,10 +2,10 @@
 delta_words.py, delta_math.py's MEAN): ZRST, BMOV, FMOV/DFMOV, XCH/DXCH, SFTR/SFTL,
 WSFR/WSFL, DECO, ENCO, ALT, SUM/DSUM and MEAN/DMEAN, with their pulse forms. Their devices are
 found when the IR is made (the Python functions' own lists: `word_after`, `bit_range`), so a
-count must be a constant (K n) and the block at most `MOST` devices: otherwise, and where a
-32-bit output would run past its area, the op calls back. What the Python code finds wrong
-when it runs (a count out of range, devices past the last of their letter) is the operation
-error, emitted as such."""
+count must be a constant (K n) and the block at most `MOST` words (ZRST: 8 x `MOST` bits):
+otherwise, and where a 32-bit output would run past its area, the op calls back. What the
+Python code finds wrong when it runs (a count out of range, devices past the last of their
+letter) is the operation error, emitted as such."""
 
 from __future__ import annotations
 
@@ -37,15 +37,20 @@ def _failed(f: FunctionText) -> None:
     error(f)
 
 
-def _clear_bits(f: FunctionText, places: Sequence[Address]) -> None:
-    """`set_bit(place, False)` for each place, one `and` a byte."""
-    masks: dict[tuple[object, int], int] = {}
+def _bit_masks(places: Sequence[Address]) -> dict[Address, int]:
+    """The bits of `places` by byte (each checked now: before any IR is emitted)."""
+    masks: dict[Address, int] = {}
     for place in places:
-        _place(place, 1)
-        key = (place.area, place.byte)
-        masks[key] = masks.get(key, 0) | 1 << (place.bit or 0)
-    for (area, byte), mask in masks.items():
-        address = Address(area, byte)  # type: ignore[arg-type]
+        if place.bit is None:
+            raise _Refused
+        byte = Address(_place(place, 1).area, place.byte)
+        masks[byte] = masks.get(byte, 0) | 1 << place.bit
+    return masks
+
+
+def _clear_bits(f: FunctionText, masks: dict[Address, int]) -> None:
+    """`set_bit(place, False)` for each place (`_bit_masks`), one `and` a byte."""
+    for address, mask in masks.items():
         _store(f, address, 1, f.value(f"and i8 {_load(f, address, 1)}, {~mask & 0xFF}"))
 
 
@@ -59,10 +64,10 @@ def _zone_reset(params: Sequence[object]) -> Body:
             or (first.bit is None and last.bit is not None):
         return _failed
     count = max(two[1] - one[1], 0) + 1
-    if count > MOST:
+    if count > (8 * MOST if first.bit is not None else MOST):  # bits: one `and` a byte
         raise _Refused
     if first.bit is not None:
-        bits = bit_range(first, count) or ()
+        bits = _bit_masks(bit_range(first, count) or ())
         return lambda f: _clear_bits(f, bits)
     stores: list[tuple[Address, int]] = []
     contacts: list[Address] = []
@@ -76,11 +81,12 @@ def _zone_reset(params: Sequence[object]) -> Body:
             contacts.append(device.bit_address(number))
     if any(width not in (1, 2, 4, 8) for _place_at, width in stores):
         raise _Refused
+    masks = _bit_masks(contacts)
 
     def body(f: FunctionText) -> None:
         for place, width in stores:
             _store(f, place, width, "0")
-        _clear_bits(f, contacts)
+        _clear_bits(f, masks)
 
     return body
 
