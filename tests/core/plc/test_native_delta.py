@@ -245,6 +245,10 @@ EXTRA: dict[str, tuple[str, ...]] = {
     "FROM": ("FROM K0 K5 D20 K2", "FROM K7 K98 D22 K3", "FROM K0 K1 D25 K1"),
     "DTO": ("DTO K0 K20 D0 K2", "DTO K2 K97 D2 K2", "DTO K3 K0 K-5 K1"),
     "DFROM": ("DFROM K0 K20 D30 K2", "DFROM K2 K97 D34 K2", "DFROM K3 K0 C200 K1"),
+    # FIFO: SFWR's place found at run time (a count from the data: before D, past the end)
+    "SFWR": ("SFWR D0 D20 K5", "SFWR D1 D2 K4", "SFWR K-3 D10 K300", "SFWR D3 D4999 K3",
+             "SFWR D4 D5000 K3", "SFWR D5 T3 K3", "SFWR D6 C198 K4"),
+    "SFRD": ("SFRD D20 D40 K5", "SFRD D0 D41 K4", "SFRD D8 D42 K2", "SFRD D9999 D43 K3"),
 }
 # NOP/WDT, shown-only rows (PID, a contact LD&), a step ladder's SET/OUT Sn, CJP and CALLP,
 # nested FOR/NEXT

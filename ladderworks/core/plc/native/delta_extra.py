@@ -1,23 +1,26 @@
 """Delta DVP's remaining small rows as native code: NOP/WDT, the shown-only rows (a box
 passes its input on, an LD/AND contact never conducts: compiler/implementations.py), a step's
 SET/OUT Sn, BOUT/DBOUT, CJP/CALLP's edge (its input kept as "prev" in a state block), SCAL,
-SCLP (16-bit), SQR/DSQR (an exact integer square root, digit by digit), SMOV, FROM/TO and
-NEXT (its runs left in a state block), with their pulse forms, made as delta_logic.py makes
-its rows."""
+SCLP (16-bit), SQR/DSQR (an exact integer square root, digit by digit), SMOV, FROM/TO,
+SFWR/SFRD (SFWR's place found at run time) and NEXT (its runs left in a state block), with
+their pulse forms, made as delta_logic.py makes its rows."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from itertools import pairwise
 
 from ladderworks.core.address import Address
 from ladderworks.core.compiler import implementations
+from ladderworks.core.dialects.delta import DEVICES
 from ladderworks.core.dialects.delta.rows_extra import ACTIONS
 from ladderworks.core.plc.functions import REGISTRY, FunctionImpl, load_all
-from ladderworks.core.plc.functions.delta_blocks import word_after
+from ladderworks.core.plc.functions.delta_blocks import device_at, word_after
 from ladderworks.core.plc.functions.delta_modules import register_of
-from ladderworks.core.plc.functions.dvp_data import M1020, width_of
+from ladderworks.core.plc.functions.delta_words import _places
+from ladderworks.core.plc.functions.dvp_data import M1020, M1022, M1067, M1068, width_of
 from ladderworks.core.plc.native import words
-from ladderworks.core.plc.native.builtins import Emitter, _load
+from ladderworks.core.plc.native.builtins import Emitter, _load, _store
 from ladderworks.core.plc.native.delta_logic import (
     checked,
     error,
@@ -33,6 +36,7 @@ from ladderworks.core.plc.native.words import Prepare, _bit, _place, _Refused, _
 
 Body = Callable[[FunctionText], None]
 _REFUSED = (_Refused, ValueError, TypeError, KeyError)
+_MOST = 512  # SFRD's words at most
 
 
 def _passes(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
@@ -292,11 +296,105 @@ def _loop_next(b: Block, impl: FunctionImpl, params: Sequence[object],
     return f.value(f"zext i1 {more} to i8")
 
 
+def _runs(letter: str) -> tuple[tuple[int, int, Address, int], ...]:
+    """Where `word_after` finds the words of device letter `letter`: each range of its
+    numbers (first, last, the first's address, the stride), as DeviceMap.word places them."""
+    return tuple((device.first, device.last, device.word_address(device.first), device.stride)
+                 for device in DEVICES.by_letter.get(letter, ()) if device.words is not None)
+
+
+def _fifo_write(params: Sequence[object]) -> Body:
+    """SFWR S D n: below n - 1 words written (the count in D), S into D + count + 1 (a place
+    found at run time among `_runs`; none: the error) and the count up; M1022 when full."""
+    source, output, count = params
+    n = _constant(count)
+    read, written_of = reader(source, False), reader(output, False)
+    place = _place(output, 2)
+    found = device_at(place)
+    if found is None:
+        raise _Refused
+    device, number = found
+    if width_of(place) != 2:  # a 32-bit count: places beyond any table
+        raise _Refused
+    runs = _runs(device.letter)
+    for first, last, at, stride in runs:
+        _place(at, stride * (last - first) + 2)
+    _place(M1022, 1), _place(M1067, 1), _place(M1068, 1)
+
+    def body(f: FunctionText) -> None:
+        written = written_of(f)
+        full, room, after = f.label(), f.label(), f.label()
+        f.add(f"br i1 {f.value(f'icmp sge i64 {written}, {n - 1}')}, label %{full}, "
+              f"label %{room}")
+        f.start(full)
+        _bit(f, M1022, "true")
+        f.add(f"br label %{after}")
+        f.start(room)
+        step = f.value(f"add i64 {written}, 1")
+        k = f.value(f"add i64 {step}, {number}")
+        target, inside = "null", "false"
+        for first, last, at, stride in reversed(runs):  # the first range wins, as in split
+            here = f.value(f"and i1 {f.value(f'icmp sge i64 {k}, {first}')}, "
+                           f"{f.value(f'icmp sle i64 {k}, {last}')}")
+            offset = f.value(f"add i64 {f.value(f'mul i64 {k}, {stride}')}, "
+                             f"{at.byte - stride * first}")
+            pointer = f.value(f"getelementptr i8, ptr {f.byte_ptr(at.area, 0)}, i64 {offset}")
+            target = f.value(f"select i1 {here}, ptr {pointer}, ptr {target}")
+            inside = f.value(f"or i1 {inside}, {here}")
+
+        def write() -> None:
+            f.add(f"store i16 {f.value(f'trunc i64 {read(f)} to i16')}, ptr {target}, "
+                  f"align 1")
+            _write(f, place, step, 2)
+            _bit(f, M1022, f.value(f"icmp sge i64 {step}, {n - 1}"))
+
+        checked(f, f.value(f"xor i1 {inside}, true"), write)
+        f.join(after)
+
+    return body
+
+
+def _fifo_read(params: Sequence[object]) -> Body:
+    """SFRD S D n: above 0 held (the count in S), S + 1 into D, S + 2 .. S + n - 1 down one
+    word and the count down (M1020 when 0); at 0 or below only M1020."""
+    source, output, count = params
+    n = _constant(count)
+    if not 2 <= n <= _MOST:
+        raise _Refused
+    held_of, target = reader(source, False), _place(output, 2)
+    counter = _place(source, 2)
+    found = _places(counter, n)
+    places = None if found is None else [_place(place, 2) for place in found]
+    _place(M1020, 1), _place(M1067, 1), _place(M1068, 1)
+
+    def body(f: FunctionText) -> None:
+        held = held_of(f)
+        empty, some, after = f.label(), f.label(), f.label()
+        f.add(f"br i1 {f.value(f'icmp sle i64 {held}, 0')}, label %{empty}, label %{some}")
+        f.start(empty)
+        _bit(f, M1020, "true")
+        f.add(f"br label %{after}")
+        f.start(some)
+        if places is None:
+            error(f)
+        else:
+            _store(f, target, 2, _load(f, places[1], 2))
+            for lower, upper in pairwise(places[1:]):
+                _store(f, lower, 2, _load(f, upper, 2))
+            left = f.value(f"sub i64 {held}, 1")
+            _write(f, counter, left, 2)
+            _bit(f, M1020, f.value(f"icmp eq i64 {left}, 0"))
+        f.join(after)
+
+    return body
+
+
 PREPARE: dict[str, Prepare] = {
     "step-set": _step, "step-out": _step, "scale": _scale, "scale-table": _scale_table,
     "root": _root(False), "root32": _root(True), "digit-move": _digit_move,
     "from": _transfer(False, True), "from32": _transfer(True, True),
-    "to": _transfer(False, False), "to32": _transfer(True, False)}
+    "to": _transfer(False, False), "to32": _transfer(True, False),
+    "fifo-write": _fifo_write, "fifo-read": _fifo_read}
 
 
 def _own() -> tuple[dict[FunctionImpl, Emitter],
