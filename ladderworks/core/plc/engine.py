@@ -262,7 +262,7 @@ class ScanEngine:
                 native = self._current if hasattr(self._current, "skip_state") else None
                 skipper = CycleSkipper(self.memory.areas, self._current.states, self._ctx,
                                        self._clocks_split[0], self.period_ms, self.divisions,
-                                       self._clocks_split[1], native)
+                                       self._clocks_split[1], native, self._monitored)
             count = 0
             while self.now_ms < limit_ms:
                 self.scan()
@@ -281,7 +281,7 @@ class ScanEngine:
                         if skipper.native is None:
                             # it moved these timers on (nothing else changed since sync)
                             self._current.states_changed(skipper.moved)
-                        self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
+                        self._unread_clocks(self.now_ms - self.period_ms)
                         self.force_table.apply(self.memory)  # forces win, as after a scan
             self._current.sync()
             return count
@@ -291,6 +291,19 @@ class ScanEngine:
         self._system_relays(now)
         if self._dialect_relays is not None:
             self._dialect_relays(self.memory.areas, now, self._first_scan)
+
+    def _unread_clocks(self, now: int) -> None:
+        """After a skip: the bits of the clocks no op reads or writes (left out of the
+        skipper's state) as the last skipped scan (at `now`) began with them. Every other
+        relay bit is what the scans left, which they repeat (a clock an op uses does not
+        change within a skip; a program that writes over a relay, as S7's MOVE into %MD0
+        over the clock memory byte, leaves its own value)."""
+        assert self._clocks_split is not None
+        areas = self.memory.areas
+        for bit, period, on in self._clocks_split[1]:
+            data, mask = areas[bit.area], 1 << (bit.bit or 0)
+            data[bit.byte] = data[bit.byte] | mask if now % period < on \
+                else data[bit.byte] & ~mask & 0xFF
 
     def _system_relays(self, now: int) -> None:
         value = 0b10

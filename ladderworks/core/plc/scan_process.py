@@ -188,7 +188,8 @@ class Scanner:
                   frame: list[tuple[bytearray, memoryview]], flow: memoryview,
                   block: memoryview, period: float, next_start: float) -> None:
         """Scan every period until told to stop."""
-        served = behind = 0
+        served = 0
+        pace = Pace()
         while self.wait(next_start):
             began = time.perf_counter()
             self.header_time(next_start, 1)
@@ -220,11 +221,11 @@ class Scanner:
             self.figures.add(now - began, cpu, began - due, late)
             if late:
                 next_start = now
-                behind += now - began > period  # the scan itself longer than its period
-                if behind == LONG_SCANS:  # the logic cannot keep up: scanning back to back
-                    normal_priority()  # at a real-time priority would starve the IDE
-            else:
-                behind = 0
+            change = pace.after_scan(late, now - began > period)
+            if change == "lower":  # the logic cannot keep up: scanning back to back at a
+                normal_priority()  # real-time priority would starve the IDE
+            elif change == "raise":
+                raise_priority()
             self.header_time(next_start, 0)
             self.send_outputs(engine)
 
@@ -283,7 +284,38 @@ class Scanner:
 
 RT_PRIORITY = 10  # SCHED_RR's priority: above every normal process, below the kernel's own
 _NICE: list[int] = []  # the nice value before `raise_priority` lowered it
-LONG_SCANS = 3  # scans in a row longer than the period: back to normal priority for the run
+LONG_SCANS = 3  # scans in a row longer than the period: back to normal priority
+ON_TIME_SCANS = 125  # then scans in a row on time (1 s at 8 ms): the raised priority again
+
+
+class Pace:
+    """When the scan process gives up its raised priority and takes it again: scans that run
+    longer than their period back to back would starve the IDE at a real-time priority, so
+    after `LONG_SCANS` of them in a row it goes back to normal; once `ON_TIME_SCANS` in a row
+    started on time (a slow start, a long scan the program makes now and then), it raises it
+    again, rather than running the rest of the run at normal priority."""
+
+    def __init__(self) -> None:
+        self.behind = self.on_time = 0
+        self.lowered = False
+
+    def after_scan(self, late: bool, long: bool) -> str | None:
+        """"lower", "raise" or None, after a scan (`late`: it ended after the next was due;
+        `long`: it took longer than the period)."""
+        if late:
+            self.on_time = 0
+            self.behind += long
+            if self.behind == LONG_SCANS and not self.lowered:
+                self.lowered = True
+                return "lower"
+            return None
+        self.behind = 0
+        if self.lowered:
+            self.on_time += 1
+            if self.on_time >= ON_TIME_SCANS:
+                self.lowered, self.on_time = False, 0
+                return "raise"
+        return None
 
 
 def normal_priority() -> None:

@@ -37,7 +37,8 @@ ClockRelay = tuple[Address, int, int]  # a clock's bit, period and time on
 # the states' copies (or the live ones), the edge memories, what was sent, the native
 # scan's state words (b"" for the Python scan)
 Hidden = tuple[list[dict[str, Any]], dict[Any, bool], tuple[Any, ...], bytes]
-Growth = tuple[list[tuple[dict[str, Any], str, int]], list[tuple[int, int, int]]]
+# what grew in the dicts, and in the native scan's state words (native/helpers.py's Grown)
+Growth = tuple[list[tuple[dict[str, Any], str, int]], Any]
 
 
 def clock_change(after_ms: int, scan_ms: int, clocks: Iterable[Clock], limit_ms: int) -> int:
@@ -58,6 +59,10 @@ def clock_change(after_ms: int, scan_ms: int, clocks: Iterable[Clock], limit_ms:
             start += period
     return best
 
+
+# the time from a place in the clocks' and scans' common period to the next clock change,
+# by the scan period and the clocks (CycleSkipper._next_change)
+_CHANGES: dict[tuple[int, tuple[Clock, ...]], dict[int, int]] = {}
 
 _READ: dict[tuple[int, tuple[ClockRelay, ...], str],
             tuple[tuple[Op, ...], tuple[ClockRelay, ...]]] = {}
@@ -120,7 +125,9 @@ class CycleSkipper:
 
     After each scan it keeps the state (memory as one bytes object, copies of the call sites'
     states that hold anything) of the last `MAX_PERIOD` scans; a scan whose state equals one
-    of those (timers' time aside) closes a cycle. With a native scan (`native`: its
+    of those (timers' time aside) closes a cycle. A skip that ends inside a cycle puts back
+    the state of the cycle's scan at that place (native scans, unmonitored, no call-back
+    holding a state). With a native scan (`native`: its
     `skip_*` methods, native/scan.py) the states in its state words are kept as one bytes
     object and moved on there; only the call-backs' states are dicts.
     """
@@ -128,19 +135,29 @@ class CycleSkipper:
     def __init__(self, areas: Mapping[Area, bytearray], states: tuple[dict[str, Any], ...],
                  ctx: FunctionContext, clocks: tuple[ClockRelay, ...], period_ms: int,
                  divisions: int = 1, unread: tuple[ClockRelay, ...] = (),
-                 native: Any = None) -> None:
+                 native: Any = None, monitored: bool = False) -> None:
         self._areas = tuple(areas.values())
+        # a skip may end inside a cycle (the state of the cycle's scan at that place put back)
+        # where that state is all kept: memory and the native scan's state words, with no
+        # call-back's dict and no power flow to put back
+        self._phases = native is not None and not monitored
         self.native = native
         self._states = native.callback_states() if native is not None else states
+        # a native scan that calls nothing back: its state words are all there is beside
+        # memory (its edge memories are among them; nothing else sends or keeps anything)
+        self._alone = native is not None and not self._states
+        self._pinned: Any = None  # the areas as `_restore` writes them (native/helpers.Areas)
         self._ctx = ctx
         self._clocks = tuple((period, on) for _bit, period, on in clocks)
-        offsets, at = {}, 0
-        for area, data in areas.items():
-            offsets[area], at = at, at + len(data)
-        # the bits of clocks no op reads, left out of the state (set from the time after a skip)
-        self._unread = tuple((offsets[bit.area] + bit.byte, 0xFF ^ (1 << (bit.bit or 0)))
+        # the bits of clocks no op reads, left out of the state (set from the time after a
+        # skip): each as its area, its byte and the mask that keeps the others
+        self._unread = tuple((areas[bit.area], bit.byte, 0xFF ^ (1 << (bit.bit or 0)))
                              for bit, _period, _on in unread)
         self._period = period_ms
+        # the clocks' and the scans' common period, and the time to the next change of a
+        # clock from each place in it (`_next_change`)
+        self._common = lcm(period_ms, *(period for period, _on in self._clocks))
+        self._changes = _CHANGES.setdefault((period_ms, self._clocks), {})
         self._lengths = tuple(p for p in range(1, MAX_PERIOD + 1) if p % divisions == 0)
         # the clocks' common period (in whole level-2 cycles): the state at scans that far
         # apart is compared, and a state that comes back skips whole such periods
@@ -168,6 +185,8 @@ class CycleSkipper:
 
     def _hidden(self, live: bool = False) -> Hidden:
         """The state beside memory: copies of the call sites' states, or the live ones."""
+        if self._alone:
+            return [], {}, (), self.native.skip_state()
         ctx = self._ctx
         sent = tuple(getattr(value, "writes", None) for value in ctx.extra.values())
         held = list(self._held) if live else [state.copy() for state in self._held]
@@ -180,12 +199,16 @@ class CycleSkipper:
         timers already moved on)."""
         ctx = self._ctx
         wake, ctx.wake_ms = ctx.wake_ms, NEVER  # what this scan's timers said
-        fingerprint = b"".join(self._areas)
-        if self._unread:
-            masked = bytearray(fingerprint)
-            for at, keep in self._unread:
-                masked[at] &= keep
-            fingerprint = bytes(masked)
+        unread = self._unread
+        if unread:  # left out for the copy, put back after it
+            values = [data[at] for data, at, _keep in unread]
+            for data, at, keep in unread:
+                data[at] &= keep
+            fingerprint = b"".join(self._areas)
+            for (data, at, _keep), value in zip(unread, values, strict=True):
+                data[at] = value
+        else:
+            fingerprint = b"".join(self._areas)
         ring = self._ring
         seen = _Seen(fingerprint, self._hidden(), alarms, next_ms - self._period, wake)
         if self._round and seen.at_ms % self._round == 0:  # a round begins: compare
@@ -213,17 +236,16 @@ class CycleSkipper:
         if growth is None:
             return None
         if self.native is None:
-            return growth, []
+            return growth, None
         words = self.native.skip_growth(before[3], after[3])
         return None if words is None else (growth, words)
 
     def _wakes(self, growth: Growth, last_ms: int) -> list[int]:
         """The wake times of the timers whose time grows (`last_ms` for one without)."""
         found = [state.get("wake", last_ms) for state, key, _step in growth[0] if key != "at"]
-        for block, elapsed, _at in growth[1]:
-            if elapsed:
-                wake = self.native.skip_wake(block)
-                found.append(last_ms if wake is None else wake)
+        if growth[1]:
+            wake = growth[1].wake
+            found.append(last_ms if wake is None else wake)
         return found
 
     def _skip(self, growth: Growth, times: int) -> None:
@@ -277,7 +299,7 @@ class CycleSkipper:
         last_ms = seen.at_ms
         growth = None
         if (seen.alarms == first.alarms
-                and clock_change(first.at_ms, period, self._clocks, NEVER) > last_ms):
+                and self._next_change(first.at_ms) > last_ms):
             if any(self._empty):  # a call site ran for the first time: copy it from now on
                 self._track()
             else:
@@ -288,13 +310,37 @@ class CycleSkipper:
             return 0
         self._misses = 0
         wakes = min([seen.wake_ms, *(kept.wake_ms for kept in list(ring)[-length:])])
-        horizon = min(wakes, limit_ms, clock_change(last_ms, period, self._clocks, limit_ms))
+        horizon = min(wakes, limit_ms, self._next_change(last_ms))
         if self._round:  # the next round's first scan runs: it is compared with this one's
             horizon = min(horizon, last_ms - last_ms % self._round + self._round)
-        cycles = max(0, -(-(horizon - next_ms) // period)) // length
-        if cycles:
-            self._skip(growth, cycles)
-        return cycles * length
+        cycles, rest = divmod(max(0, -(-(horizon - next_ms) // period)), length)
+        if rest and not (self._phases and not self._held):
+            rest = 0
+        if rest:  # the state after `rest` more scans is the one `rest` scans into the cycle
+            self._restore(ring[rest - length])
+        if cycles or rest:
+            self._skip(growth, cycles + (1 if rest else 0))
+        return cycles * length + rest
+
+    def _next_change(self, after_ms: int) -> int:
+        """`clock_change(after_ms, ...)` with no limit, kept by the place of `after_ms` in the
+        clocks' and the scans' common period (where they all repeat)."""
+        phase = after_ms % self._common
+        delta = self._changes.get(phase)
+        if delta is None:
+            delta = self._changes[phase] = \
+                clock_change(after_ms, self._period, self._clocks, NEVER) - after_ms
+        return after_ms + delta
+
+    def _restore(self, seen: _Seen) -> None:
+        """Put back memory and the native state words as they were after a scan of the ring
+        (the clocks no op reads come back with the relays the engine sets after a skip)."""
+        if self._pinned is None:
+            from ladderworks.core.plc.native.helpers import Areas
+
+            self._pinned = Areas(self._areas)
+        self._pinned.put(seen.fingerprint)
+        self.native.skip_restore(seen.hidden[3])
 
 
 def _growth(before: Hidden, after: Hidden) -> list[tuple[dict[str, Any], str, int]] | None:

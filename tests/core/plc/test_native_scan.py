@@ -15,6 +15,7 @@ compares and arithmetic, forces and disabled elements, monitored or not.
 from __future__ import annotations
 
 import ctypes
+import dataclasses
 import random
 from pathlib import Path
 
@@ -169,7 +170,10 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
     binary = binary_of("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nDCNV D0 D2\n"
-                       "WRT Y0.0\n")  # DCNV: called back
+                       "WRT Y0.0\n")
+    binary = dataclasses.replace(binary, ops=tuple(  # DCNV of D area's last byte: called back
+        dataclasses.replace(op, params=(Address(Area.D, 9999), *op.params[1:]))
+        if op.name == "DCNV" else op for op in binary.ops))
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
     assert len(engine._current.callbacks) == 1
@@ -482,6 +486,29 @@ def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
         assert native._ctx.edges == python._ctx.edges
         assert native.memory.areas == python.memory.areas, until
     assert native.skipped > 1000  # the timers ran on through skips
+
+
+def test_a_native_skip_ends_inside_a_cycle_with_its_state_put_back() -> None:
+    """A bit that flips every scan makes a cycle of two; a skip up to a clock's edge that
+    leaves one scan of a cycle puts back the state of the cycle's first scan (memory, the
+    DIFU memory and the timer's block) rather than running that scan: the scans after it
+    and the states are the Python scan's, run every scan."""
+    text = "%@3\nRD.NOT R0.0\nWRT R0.0\nRD R0.0\nDIFU 1\nWRT R0.3\nRD X0.0\n" \
+           "TMRB 1 4000\nWRT Y0.0\nRD R9091.5\nAND R0.0\nWRT R0.1\n%\n"
+    python, native = pair(binary_of(text))
+    odd = 0
+    for until in range(200, 9000, 104):
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = until // 1000 % 2
+        skipped = native.skipped
+        for engine in (python, native):
+            engine.advance(until)
+        odd += (native.skipped - skipped) % 2
+        assert native.memory.areas == python.memory.areas, until
+        assert native.call_states() == python._states
+        assert native._ctx.edges == python._ctx.edges
+    assert odd > 20  # skips of an odd number of scans: ended inside a cycle of two
+    assert native.skipped > 600
 
 
 def test_the_skippers_native_comparison_finds_time_values_only() -> None:

@@ -16,6 +16,7 @@ from ladderworks.core import dialects
 from ladderworks.core.address import Address, parse_address
 from ladderworks.core.dialects.fatek.ascii_files import load_ascii_files
 from ladderworks.core.il import parse, parse_file
+from ladderworks.core.plc import scan_process
 from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.process_runner import ProcessRunner
 from ladderworks.core.plc.runner import RealTimeRunner
@@ -280,3 +281,21 @@ def test_the_scan_process_priority_is_raised_while_it_scans_and_given_back(asked
     assert unchanged == normal  # raised exactly when it says so
     if asked == "normal":
         assert normal == "True"
+
+
+def test_the_scan_process_gives_up_its_priority_while_scans_run_long_and_takes_it_again() -> None:
+    """Three scans longer than the period, late with no scan on time between: back to normal
+    priority (once); a scan on time starts the count again, a late one that was not long is
+    not counted; after a second of scans on time (125 at 8 ms) the priority is raised again,
+    and the next long row lowers it again."""
+    pace = scan_process.Pace()
+    assert [pace.after_scan(True, True) for _ in range(2)] == [None, None]
+    assert pace.after_scan(False, False) is None  # on time: the row starts again
+    assert [pace.after_scan(True, True) for _ in range(2)] == [None, None]
+    assert pace.after_scan(True, False) is None  # late after a short scan: not counted
+    assert pace.after_scan(True, True) == "lower"
+    assert [pace.after_scan(True, True) for _ in range(5)] == [None] * 5  # lowered once
+    changes = [pace.after_scan(False, False) for _ in range(scan_process.ON_TIME_SCANS)]
+    assert changes == [None] * (scan_process.ON_TIME_SCANS - 1) + ["raise"]
+    assert pace.after_scan(False, False) is None
+    assert [pace.after_scan(True, True) for _ in range(3)] == [None, None, "lower"]

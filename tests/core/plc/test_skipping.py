@@ -144,7 +144,8 @@ def program_inputs(binary: BinaryProgram) -> tuple[list[Address], list[Address],
 # -- the examples ------------------------------------------------------------------------------
 
 EXAMPLE_FILES = sorted([*EXAMPLES.glob("*.LAD"), *(EXAMPLES / "delta").glob("*.txt"),
-                        *(EXAMPLES / "fatek").glob("*.txt"), *(EXAMPLES / "fatek").glob("*.lst")])
+                        *(EXAMPLES / "fatek").glob("*.txt"), *(EXAMPLES / "fatek").glob("*.lst"),
+                        *(EXAMPLES / "s7").glob("*/*.s7dcl")])
 
 
 @pytest.mark.parametrize("path", EXAMPLE_FILES, ids=lambda p: f"{p.parent.name}/{p.stem}")

@@ -33,6 +33,25 @@ class Timer:
         self.start_at = Address(base.area, base.byte + 12)
         self.flags = base.byte + 8
 
+    @classmethod
+    def unbound(cls, base: Address) -> Timer:
+        """The Timer of the instance at `base` bound to no memory (`timer_of` binds one at its
+        next run): the native scan's call-site states hold these."""
+        timer = cls.__new__(cls)
+        timer.memory = None  # type: ignore[assignment]
+        timer.data = bytearray()
+        timer.pt_at = Address(base.area, base.byte)
+        timer.et_at = Address(base.area, base.byte + 4)
+        timer.start_at = Address(base.area, base.byte + 12)
+        timer.flags = base.byte + 8
+        return timer
+
+    def __eq__(self, other: object) -> bool:
+        """Timers of the same instance are equal, whatever memory each is bound to."""
+        return isinstance(other, Timer) and other.pt_at == self.pt_at
+
+    __hash__ = None  # type: ignore[assignment]
+
     def __reduce__(self) -> tuple:
         """Pickled as None (a scan process's state): it is found again in the memory there."""
         return (type(None), ())

@@ -31,7 +31,7 @@ from ladderworks.core.plc.native.delta_logic import (
 )
 from ladderworks.core.plc.native.delta_timers import StatefulEmitter, _rising
 from ladderworks.core.plc.native.ir_text import FunctionText
-from ladderworks.core.plc.native.state_block import CHANGED, ELAPSED, HAS_LEFT, Block
+from ladderworks.core.plc.native.state_block import CHANGED, ELAPSED, HAS_LEFT, MORE, Block
 from ladderworks.core.plc.native.words import Prepare, _bit, _place, _Refused, _row, _write
 
 Body = Callable[[FunctionText], None]
@@ -282,18 +282,21 @@ def _loop_next(b: Block, impl: FunctionImpl, params: Sequence[object],
         return None
     f = b.f
     flags = b.flags()
-    has_left = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_LEFT}')}, 0")
+    more = b.more(flags)
+    has_left = f.value(f"icmp ne i32 {f.value(f'and i32 {more}, {HAS_LEFT}')}, 0")
     left = f.value(f"select i1 {has_left}, i64 {b.load64(ELAPSED)}, i64 0")
     again = f.value(f"select i1 {f.value(f'icmp sle i64 {left}, 0')}, i64 {count(f)}, "
                     f"i64 {left}")
     now = f.value(f"sub i64 {again}, 1")
-    more = f.value(f"icmp sgt i64 {now}, 0")
-    kept = f.value(f"select i1 {more}, i64 {now}, i64 0")
+    due = f.value(f"icmp sgt i64 {now}, 0")
+    kept = f.value(f"select i1 {due}, i64 {now}, i64 0")
     b.store64(ELAPSED, kept)
-    moved = f.value(f"icmp ne i64 {kept}, {left}")
-    b.set_flags(flags, f.value(f"or i32 {f.value(f'or i32 {flags}, {HAS_LEFT}')}, "
-                               f"{f.value(f'select i1 {moved}, i32 {CHANGED}, i32 0')}"))
-    return f.value(f"zext i1 {more} to i8")
+    moved = f.value(f"select i1 {f.value(f'icmp ne i64 {kept}, {left}')}, i32 {CHANGED}, "
+                    f"i32 0")
+    changed = b.set_more(more, f.value(f"or i32 {more}, {HAS_LEFT}"))
+    b.set_flags(flags, f.value(f"or i32 {f.value(f'or i32 {flags}, {MORE}')}, "
+                               f"{f.value(f'or i32 {changed}, {moved}')}"))
+    return f.value(f"zext i1 {due} to i8")
 
 
 def _runs(letter: str) -> tuple[tuple[int, int, Address, int], ...]:

@@ -1,6 +1,7 @@
 """Delta DVP's TMR, CNT and DCNT as native code (core/plc/functions/dvp_timers.py,
-dvp_counters.py), each with its state in a block (state_block.py: TMR's "at", "wake",
-"running" and "ms" in ELAPSED; a counter's "prev"), and RST of a T, C or D device (no state).
+dvp_counters.py), each with its state in a block (state_block.py: TMR's "at", "wake", and in
+the pad word's flags (MORE) "running" and "ms" (at ELAPSED); a counter's "prev"), and RST of
+a T, C or D device (no state).
 A high-speed counter (C235-C255: dvp_high_speed) keeps its inputs' last values ("x", "y").
 A parameter the Python code would take otherwise (a timer or counter not of its letter, data
 past its area) calls back."""
@@ -22,6 +23,7 @@ from ladderworks.core.plc.native.state_block import (
     AT,
     CHANGED,
     ELAPSED,
+    ELAPSED_SET,
     HAS_AT,
     HAS_HX,
     HAS_HY,
@@ -31,6 +33,7 @@ from ladderworks.core.plc.native.state_block import (
     HAS_WAKE,
     HX,
     HY,
+    MORE,
     PREV,
     RUNNING,
     WAKE,
@@ -79,19 +82,21 @@ def _tmr(b: Block, impl: FunctionImpl, params: Sequence[object],
     target_of = words._source(preset)
     f = b.f
     flags = b.flags()
+    more = b.more(flags)  # "running", "ms" (at ELAPSED, ELAPSED_SET: a time value)
+    has_ms = f.value(f"icmp ne i32 {f.value(f'and i32 {more}, {HAS_MS}')}, 0")
+    ms = f.value(f"select i1 {has_ms}, i64 {b.load64(ELAPSED)}, i64 0")
     on, off, run, count, stop, counted, joined = (f.label() for _ in range(7))
     f.add(f"br i1 {f.truth(inputs[-1])}, label %{on}, label %{off}")
-    f.start(off)
+    f.start(off)  # running False, ms 0
     _store(f, place, 2, "0")
     _bit(f, contact, "false")
-    had_ms = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_MS}')}, 0")
-    ms_was = f.value(f"select i1 {had_ms}, i64 {b.load64(ELAPSED)}, i64 0")
     b.store64(ELAPSED, "0")
-    stopped = f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_RUNNING | HAS_MS}')}, "
+    stopped = f.value(f"and i32 {f.value(f'or i32 {more}, {HAS_RUNNING | HAS_MS}')}, "
                       f"{~RUNNING}")
-    moved = f.value(f"icmp ne i64 {ms_was}, 0")
-    b.set_flags(flags, f.value(f"or i32 {stopped}, "
-                               f"{f.value(f'select i1 {moved}, i32 {CHANGED}, i32 0')}"))
+    changed = b.set_more(more, stopped)
+    moved = f.value(f"select i1 {f.value(f'icmp ne i64 {ms}, 0')}, i32 {CHANGED}, i32 0")
+    b.set_flags(flags, f.value(f"or i32 {f.value(f'or i32 {flags}, {MORE | ELAPSED_SET}')}, "
+                               f"{f.value(f'or i32 {changed}, {moved}')}"))
     f.add(f"br label %{joined}")
     f.start(on)  # executed_once_this_scan: "at" is not now
     now = _time(f, layout.NOW)
@@ -100,10 +105,8 @@ def _tmr(b: Block, impl: FunctionImpl, params: Sequence[object],
     f.add(f"br i1 {again}, label %{joined}, label %{run}")
     f.start(run)
     b.store64(AT, now)
-    running = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_RUNNING | RUNNING}')}, "
+    running = f.value(f"icmp eq i32 {f.value(f'and i32 {more}, {HAS_RUNNING | RUNNING}')}, "
                       f"{HAS_RUNNING | RUNNING}")
-    has_ms = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_MS}')}, 0")
-    ms = f.value(f"select i1 {has_ms}, i64 {b.load64(ELAPSED)}, i64 0")
     step = f.value(f"select i1 {running}, i64 {_time(f, layout.SCAN_MS)}, i64 0")
     elapsed = f.value(f"add i64 {ms}, {step}")
     target = target_of(f)
@@ -135,8 +138,9 @@ def _tmr(b: Block, impl: FunctionImpl, params: Sequence[object],
     f.add(f"store i64 {f.value(f'select i1 {earlier}, i64 {wake}, i64 {scan_wake}')}, "
           f"ptr {f.word_ptr(layout.WAKE)}, align 4")
     _bit(f, contact, f.value(f"icmp sge i64 {final}, {target}"))
+    b.set_more(more, f.value(f"or i32 {more}, {HAS_RUNNING | RUNNING | HAS_MS}"))
     b.set_flags(flags, f.value(f"or i32 {flags}, "
-                               f"{HAS_AT | HAS_RUNNING | RUNNING | HAS_MS | HAS_WAKE | CHANGED}"))
+                               f"{HAS_AT | HAS_WAKE | MORE | ELAPSED_SET | CHANGED}"))
     f.add(f"br label %{joined}")
     f.start(joined)
     return inputs[-1]
@@ -214,15 +218,17 @@ def _high_speed(b: Block, counter: HighSpeed, flag: Address, act: str, current: 
     f = b.f
     first, second = _x(f, counter.first), _x(f, counter.second)
     flags = b.flags()
-    was_x = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HX}')}, 0")
-    was_y = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HY}')}, 0")
+    more = b.more(flags)
+    was_x = f.value(f"icmp ne i32 {f.value(f'and i32 {more}, {HX}')}, 0")
+    was_y = f.value(f"icmp ne i32 {f.value(f'and i32 {more}, {HY}')}, 0")
     rise_first = f.value(f"and i1 {first}, {f.value(f'xor i1 {was_x}, true')}")
     rise_second = f.value(f"and i1 {second}, {f.value(f'xor i1 {was_y}, true')}")
     changed_second = f.value(f"xor i1 {second}, {was_y}")
-    kept = f.value(f"or i32 {f.value(f'and i32 {flags}, {~(HX | HY)}')}, {HAS_HX | HAS_HY}")
+    kept = f.value(f"or i32 {f.value(f'and i32 {more}, {~(HX | HY)}')}, {HAS_HX | HAS_HY}")
     with_x = f.value(f"or i32 {kept}, {f.value(f'select i1 {first}, i32 {HX}, i32 0')}")
-    b.set_flags(flags, f.value(f"or i32 {with_x}, "
-                               f"{f.value(f'select i1 {second}, i32 {HY}, i32 0')}"))
+    changed = b.set_more(more, f.value(f"or i32 {with_x}, "
+                                       f"{f.value(f'select i1 {second}, i32 {HY}, i32 0')}"))
+    b.set_flags(flags, f.value(f"or i32 {f.value(f'or i32 {flags}, {MORE}')}, {changed}"))
     reset = _x(f, counter.reset)
     counting = f.value(f"and i1 {f.value(f'xor i1 {reset}, true')}, {act}")
     if counter.start is not None:

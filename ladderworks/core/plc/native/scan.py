@@ -13,7 +13,7 @@ from ladderworks.core.compiler.checks import implementation_of
 from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import layout, state_block
-from ladderworks.core.plc.native.helpers import grown, move
+from ladderworks.core.plc.native.helpers import Grown, buffers, grow, move, put
 from ladderworks.core.plc.native.ir_text import AREA_ORDER
 from ladderworks.core.plc.native.jit import Compiled, compiled_scan
 
@@ -77,6 +77,7 @@ class NativeScan:
                                                              layout.WAKE))
         self.stale = True  # the edge memories are to be read from `ctx.edges` before a scan
         self._unsynced = False  # scans changed state words not yet in the dicts (`sync`)
+        self._grow_buffers: tuple[Any, Any] | None = None  # the skipper's (skip_growth)
 
     def _bind(self) -> None:
         """Take the areas' addresses (again when a buffer was replaced)."""
@@ -204,25 +205,27 @@ class NativeScan:
         dicts, everything the next scan depends on."""
         return bytes(memoryview(self._words).cast("B")[self._state_at:self._state_end])
 
-    def skip_growth(self, before: bytes, after: bytes) -> list[tuple[int, int, int]] | None:
+    def skip_growth(self, before: bytes, after: bytes) -> Grown | None:
         """What the time values (a timer's elapsed time, the scan a site last ran at) grew by
-        from `before` to `after` (two `skip_state()`s), as (block, elapsed's growth, at's
-        growth); None when anything else differs (compared in native code)."""
-        if before == after:
-            return []
-        return grown(before, after, len(self._edge_keys), len(self._blocks))
+        from `before` to `after` (two `skip_state()`s), with the earliest wake of the timers
+        that run; None when anything else differs (compared in native code)."""
+        if self._grow_buffers is None:
+            self._grow_buffers = buffers(len(self._blocks))
+        return grow(before, after, len(self._edge_keys), len(self._blocks), self._grow_buffers)
 
-    def skip_wake(self, block: int) -> int | None:
-        """The wake time a block's state says, or None."""
-        words, base = self._words, self._first_block + state_block.BLOCK * block
-        return state_block._get64(words, base + state_block.WAKE) \
-            if words[base] & state_block.HAS_WAKE else None
+    def skip_restore(self, state: bytes) -> None:
+        """Put back the edge memories and state blocks a `skip_state()` gave; those that
+        differed join the changed list (the next `sync` writes their dicts)."""
+        put(self._words, state, len(self._edge_keys), len(self._blocks),
+            self._state_at // 4, self._marks, self._dirty)
+        self._unsynced = True
 
-    def skip_move(self, growth: list[tuple[int, int, int]], times: int) -> None:
+    def skip_move(self, growth: Grown, times: int) -> None:
         """Move the time values on by `times` times their growth (the skipped scans'), the
         blocks then in the changed list (the dicts get them at the next `sync`)."""
-        move(self._words, growth, times, self._first_block, self._marks, self._dirty)
-        self._unsynced = True
+        if growth:
+            move(self._words, growth, times, self._first_block, self._marks, self._dirty)
+            self._unsynced = True
 
     def sync(self) -> None:
         """Write the call sites' states and the edge memories the scans changed since the last
@@ -240,9 +243,12 @@ class NativeScan:
             if entry >= 0:
                 state, base = blocks[entry]
                 state_block.pull(words, base, state)
-            else:
+            else:  # (an edge memory put back by a skip may be one not yet kept)
                 word, key = edge_keys[-1 - entry]
-                edges[key] = bool(words[word] & 1)
+                if words[word]:
+                    edges[key] = bool(words[word] & 1)
+                else:
+                    edges.pop(key, None)
         words[layout.DIRTY] = 0
 
 

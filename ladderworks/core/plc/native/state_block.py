@@ -3,8 +3,8 @@ the block's layout, its IR (`Block`), an error output held as `held_output` hold
 dicts written from the words (`pull`) and the words from the dicts (`push`).
 
 The flags word says which keys the dict has and holds the booleans and a "changed" bit; three
-64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value` and Delta TMR's `ms` at
-`elapsed`, NEXT's `left` too). A block that
+64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value`, Delta TMR's `ms` and NEXT's
+`left` at `elapsed`). A block that
 changed in a scan puts its number in the changed list once (layout.DIRTY).
 """
 
@@ -13,11 +13,13 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from ladderworks.core.address import Address
+from ladderworks.core.plc.functions import s7_counters, s7_timers
 from ladderworks.core.plc.native import layout
 from ladderworks.core.plc.native.builtins import _fits as _fits
 from ladderworks.core.plc.native.builtins import _load as _load
 from ladderworks.core.plc.native.builtins import _store as _store
-from ladderworks.core.plc.native.ir_text import FunctionText
+from ladderworks.core.plc.native.ir_text import AREA_ORDER, FunctionText
 
 BLOCK = 8  # words per site: flags, pad, elapsed (i64), at (i64), wake (i64)
 ELAPSED, AT, WAKE = 2, 4, 6
@@ -28,20 +30,26 @@ HAS_ACT, ACT, HAS_VALUE = 1024, 2048, 4096  # counters: the last ACT; CTRB's val
 HAS_PREV, PREV = 1 << 13, 1 << 14  # Delta's pulse forms: the input at the last execution
 HAS_EN, EN, HAS_FO0, FO0 = 1 << 16, 1 << 17, 1 << 18, 1 << 19  # Fatek boxes: "en", "fo0"
 CHANGED = 1 << 15
-# Delta's TMR: "running", and "ms" (the time short of a tick, at ELAPSED: a time value)
-HAS_RUNNING, RUNNING, HAS_MS = 1 << 24, 1 << 25, 1 << 26
-HAS_LEFT = 128  # Delta's NEXT: the runs left of its loop ("left", at ELAPSED)
-# Delta's high-speed counters: their inputs at the last execution ("x", "y")
-HAS_HX, HX, HAS_HY, HY = 1 << 27, 1 << 28, 1 << 29, 1 << 30
+# S7: the call site's "timer" (s7_timers.Timer) / "places" (s7_counters) is in the dict; the
+# pad word (INSTANCE) says its instance: area index << 24 | count type << 16 | byte
+HAS_TIMER, HAS_PLACES, INSTANCE = 1 << 29, 1 << 30, 1  # high bits: far from the others
+# Delta: MORE says the pad word (as INSTANCE: never both) holds more keys' flags: TMR's
+# "running" and "ms" (at ELAPSED with ELAPSED_SET: a time value the skipper moves on), the
+# high-speed counters' "x" and "y" (their inputs at the last execution), NEXT's "left" (at
+# ELAPSED, not a time value)
+MORE = 64
+HAS_RUNNING, RUNNING, HAS_MS, HAS_HX, HX, HAS_HY, HY, HAS_LEFT = (1 << k for k in range(8))
+_MORE_BOOLS = (("running", HAS_RUNNING, RUNNING), ("x", HAS_HX, HX), ("y", HAS_HY, HY))
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
 class Block:
     """The IR of one site's state block (`base`: its first word)."""
 
     def __init__(self, f: FunctionText, base: int, number: int, dirty_list: int,
-                 marks: int) -> None:
+                 marks: int, dialect: str = "seed") -> None:
         self.f, self.base, self.number, self.dirty_list = f, base, number, dirty_list
         self.mark = marks + number
+        self.dialect = dialect  # the program's: its byte order (dialects.get(...).byteorder)
 
     def ptr(self, offset: int) -> str:
         return self.f.word_ptr(self.base + offset)
@@ -54,6 +62,20 @@ class Block:
 
     def store64(self, offset: int, value: str) -> None:
         self.f.add(f"store i64 {value}, ptr {self.ptr(offset)}, align 4")
+
+    def more(self, flags: str) -> str:
+        """The pad word's flags (`MORE`), 0 when the flags say it holds none."""
+        f = self.f
+        raw = f.value(f"load i32, ptr {self.ptr(INSTANCE)}")
+        has = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {MORE}')}, 0")
+        return f.value(f"select i1 {has}, i32 {raw}, i32 0")
+
+    def set_more(self, old: str, new: str) -> str:
+        """Store the pad word's flags; CHANGED (for `set_flags`) when they differ, else 0."""
+        f = self.f
+        f.add(f"store i32 {new}, ptr {self.ptr(INSTANCE)}")
+        differs = f.value(f"icmp ne i32 {old}, {new}")
+        return f.value(f"select i1 {differs}, i32 {CHANGED}, i32 0")
 
     def set_flags(self, old: str, new: str) -> None:
         """Store the flags; a block whose flags or values changed (`new` has CHANGED set by
@@ -131,16 +153,16 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
         state["fo0"] = bool(flags & FO0)
     if flags & HAS_VALUE:
         state["value"] = _get64(words, base + ELAPSED)
-    if flags & HAS_RUNNING:
-        state["running"] = bool(flags & RUNNING)
-    if flags & HAS_HX:
-        state["x"] = bool(flags & HX)
-    if flags & HAS_HY:
-        state["y"] = bool(flags & HY)
-    if flags & HAS_MS:
-        state["ms"] = _get64(words, base + ELAPSED)
-    if flags & HAS_LEFT:
-        state["left"] = _get64(words, base + ELAPSED)
+    if flags & (HAS_TIMER | HAS_PLACES):
+        _pull_instance(words[base + INSTANCE], flags, state)
+    if flags & MORE:
+        more = words[base + INSTANCE]
+        for key, has, value_bit in _MORE_BOOLS:
+            if more & has:
+                state[key] = bool(more & value_bit)
+        for key, has in (("ms", HAS_MS), ("left", HAS_LEFT)):
+            if more & has:
+                state[key] = _get64(words, base + ELAPSED)
 
 
 def push(words: Any, base: int, state: dict[str, Any]) -> None:
@@ -156,20 +178,47 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
                     flags |= ELAPSED_SET
     for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1), ("act", HAS_ACT, ACT),
                                 ("prev", HAS_PREV, PREV), ("en", HAS_EN, EN),
-                                ("fo0", HAS_FO0, FO0), ("running", HAS_RUNNING, RUNNING),
-                                ("x", HAS_HX, HX), ("y", HAS_HY, HY)):
+                                ("fo0", HAS_FO0, FO0)):
         if key in state:
             flags |= has | (value_bit if state[key] else 0)
     if "value" in state:
         flags |= HAS_VALUE
         _set64(words, base + ELAPSED, int(state["value"]))
-    if "ms" in state:
-        flags |= HAS_MS
-        _set64(words, base + ELAPSED, int(state["ms"]))
-    if "left" in state:
-        flags |= HAS_LEFT
-        _set64(words, base + ELAPSED, int(state["left"]))
+    if state.get("timer") is not None:
+        flags |= HAS_TIMER
+        words[base + INSTANCE] = instance_word(state["timer"].pt_at)
+    if state.get("places") is not None:
+        flags |= HAS_PLACES
+        places = state["places"]
+        words[base + INSTANCE] = instance_word(places[1], int(places[0]))
+    more = 0
+    for key, has, value_bit in _MORE_BOOLS:
+        if key in state:
+            more |= has | (value_bit if state[key] else 0)
+    for key, has in (("ms", HAS_MS), ("left", HAS_LEFT)):
+        if key in state:
+            more |= has
+            flags |= ELAPSED_SET if key == "ms" else 0
+            _set64(words, base + ELAPSED, int(state[key]))
+    if more:
+        flags |= MORE
+        words[base + INSTANCE] = more
     words[base] = flags
+
+
+def instance_word(instance: Address, vtype: int = 0) -> int:
+    """The INSTANCE word of an S7 timer's or counter's instance (and count type)."""
+    return AREA_ORDER.index(instance.area) << 24 | vtype << 16 | instance.byte
+
+
+def _pull_instance(word: int, flags: int, state: dict[str, Any]) -> None:
+    """An S7 site's "timer" or "places" as its Python function makes them at its first run
+    (kept when the dict has one: they never change)."""
+    instance = Address(AREA_ORDER[word >> 24], word & 0xFFFF)
+    if flags & HAS_TIMER and state.get("timer") is None:
+        state["timer"] = s7_timers.Timer.unbound(instance)
+    if flags & HAS_PLACES and state.get("places") is None:
+        s7_counters._places(state, (instance, word >> 16 & 0xFF))
 
 
 def _get64(words: Any, word: int) -> int:

@@ -45,6 +45,11 @@ from ladderworks.core.plc.native import (
     fatek,
     layout,
     rotation,
+    s7_bits,
+    s7_convert,
+    s7_timers,
+    s7_values,
+    search,
     shift,
     words,
     words32,
@@ -85,6 +90,11 @@ StatefulEmitter = Callable[[Block, FunctionImpl, Sequence[object], list[str]], s
 # rows of other modules, each with its state in a block: implementation -> (kind, emitter);
 # a module adds its own dict with one `ROWS.update(module.STATEFUL)` line below
 ROWS: dict[FunctionImpl, tuple[str, StatefulEmitter]] = {}
+ROWS.update(s7_values.STATEFUL)
+ROWS.update(s7_bits.STATEFUL)
+ROWS.update(s7_convert.STATEFUL)
+ROWS.update(s7_timers.STATEFUL)
+ROWS.update(search.STATEFUL)
 ROWS.update(delta_timers.STATEFUL)
 ROWS.update(delta_extra.STATEFUL)
 
@@ -402,7 +412,7 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
     """The op's native code with its state in block `number` (at word `base`); None: not
     native (nothing emitted)."""
     found = kind(spec, impl)
-    block = Block(f, base, number, dirty_list, marks)
+    block = Block(f, base, number, dirty_list, marks, dialect)
     try:
         if impl in ROWS:
             return ROWS[impl][1](block, impl, params, inputs)
