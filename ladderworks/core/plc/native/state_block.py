@@ -195,8 +195,9 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
     for key, has, value_bit in _MORE_BOOLS:
         if key in state:
             more |= has | (value_bit if state[key] else 0)
+    # Delta TMR's "ms" (always with "running": the "ms" of other dialects' timers is theirs)
     for key, has in (("ms", HAS_MS), ("left", HAS_LEFT)):
-        if key in state:
+        if key in state and (key != "ms" or "running" in state):
             more |= has
             flags |= ELAPSED_SET if key == "ms" else 0
             _set64(words, base + ELAPSED, int(state[key]))
