@@ -355,3 +355,25 @@ def test_int_of_an_infinity_or_a_nan_is_an_operation_error(bits: str) -> None:
         engine.scan()
         assert engine.memory.bit(DEVICES.bit("M1067")) == 1
         assert engine.memory.read(DEVICES.word("D2")[0], 2) == 7
+
+
+def test_the_delta_states_go_through_the_dicts_both_ways() -> None:
+    """TMR's running/ms, a high-speed counter's x/y and NEXT's left written into the dicts
+    (export) and read back into another engine's state words (import) go on as in Python."""
+    binary = _delta("LD X0\nTMR T0 K30\nLD X1\nDCNT C246 K5\nLD X2\nDCNT C251 K3\n"
+                    "FOR K3\nLD X3\nINC D20\nNEXT\n")
+    rng = random.Random(11)
+    python, native = _pair(binary, False, 8)
+    for k in range(60):
+        inputs = rng.randrange(256) | 1  # the timer runs throughout
+        if k == 30:  # the states through their dicts into fresh engines
+            state = native.export_state()
+            assert state == python.export_state()
+            python, native = _pair(binary, False, 8)
+            python.import_state(state)
+            native.import_state(state)
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = inputs
+            engine.scan()
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
