@@ -4,7 +4,9 @@ simulator runs, as native code (core/plc/native: builtins.py, stateful.py, table
 structural rows, JMP/CALL/COM and the like, are the generator's own) or as a call-back into
 its Python implementation; counted, with the call-backs' names. A native row may still call
 back at a call site whose parameters the native code does not take (data past its area, an
-unknown width). Then the call sites that call back in the real programs. Prints; asserts
+unknown width). Then the call sites that call back in the real programs: the FANUC ones, each
+Delta WPLSoft project (shared/real-programs/delta/*.dvp) and the Fatek WinProladder one
+(fatek/*.pdw), each with its call-back rows by count, and the totals. Prints; asserts
 nothing.
 
     python benchmarks/native_callbacks.py
@@ -58,17 +60,28 @@ def main() -> int:
               f"{len(back)} call back into Python")
         if back:
             print("  call back: " + ", ".join(back))
-    for program in PROGRAMS:
-        path = SHARED / f"{program}.txt"
+    paths = [SHARED / f"{program}.txt" for program in PROGRAMS]
+    paths += sorted((SHARED / "delta").glob("*.dvp")) + sorted((SHARED / "fatek").glob("*.pdw"))
+    totals: dict[str, collections.Counter[str]] = {}
+    for path in paths:
         if not path.exists():
             continue
-        compiled = compile_program(parse_file(path).program)
-        assert compiled.binary is not None
-        engine = ScanEngine(decode(compiled.binary), backend="native")
-        sites = collections.Counter(getattr(engine._current, "callbacks", []))
-        print(f"{program}: {sum(sites.values())} call sites call back: " +
+        sites = callbacks(path)
+        totals.setdefault(path.suffix, collections.Counter()).update(sites)
+        print(f"{path.name}: {sum(sites.values())} call sites call back: " +
+              (", ".join(f"{k} {v}" for k, v in sites.most_common()) or "none"))
+    for suffix, sites in totals.items():
+        print(f"all {suffix} programs: {sum(sites.values())} call sites call back: " +
               (", ".join(f"{k} {v}" for k, v in sites.most_common()) or "none"))
     return 0
+
+
+def callbacks(path: Path) -> collections.Counter[str]:
+    """The call sites of the program in `path` that call back, by row (its own reader)."""
+    compiled = compile_program(parse_file(path).program)
+    assert compiled.binary is not None, path
+    engine = ScanEngine(decode(compiled.binary), backend="native")
+    return collections.Counter(getattr(engine._current, "callbacks", []))
 
 
 if __name__ == "__main__":

@@ -77,7 +77,8 @@ def _float32(memory: Memory, params: tuple) -> None:
 def _integer(memory: Memory, params: tuple, bits: int) -> None:
     source, output = params
     number = read_float(memory, source)
-    if math.isnan(number) or not -(2.0 ** (bits - 1)) <= math.trunc(number) < 2.0 ** (bits - 1):
+    if not math.isfinite(number) \
+            or not -(2.0 ** (bits - 1)) <= math.trunc(number) < 2.0 ** (bits - 1):
         operation_error(memory)
         return
     whole = math.trunc(number)

@@ -39,7 +39,8 @@ Emitter = Callable[[FunctionText, Sequence[object], list[str]], str | None]
 def declarations() -> list[str]:
     """The IR declarations the native functions use."""
     return ["declare void @llvm.memmove.p0.p0.i64(ptr, ptr, i64, i1)",
-            *(f"declare i{n} @llvm.bswap.i{n}(i{n})" for n in (16, 32, 64))]  # S7's values
+            *(f"declare i{n} @llvm.bswap.i{n}(i{n})" for n in (16, 32, 64)),  # S7's values
+            "declare double @llvm.sqrt.f64(double)"]  # Delta's DESQR
 
 
 def _fits(address: object, width: int) -> bool:

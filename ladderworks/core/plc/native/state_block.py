@@ -3,7 +3,8 @@ the block's layout, its IR (`Block`), an error output held as `held_output` hold
 dicts written from the words (`pull`) and the words from the dicts (`push`).
 
 The flags word says which keys the dict has and holds the booleans and a "changed" bit; three
-64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value` at `elapsed`). A block that
+64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value`, Delta TMR's `ms` and NEXT's
+`left` at `elapsed`). A block that
 changed in a scan puts its number in the changed list once (layout.DIRTY).
 """
 
@@ -35,6 +36,13 @@ CHANGED = 1 << 15
 # S7: the call site's "timer" (s7_timers.Timer) / "places" (s7_counters) is in the dict; the
 # pad word (INSTANCE) says its instance: area index << 24 | count type << 16 | byte
 HAS_TIMER, HAS_PLACES, INSTANCE = 1 << 29, 1 << 30, 1  # high bits: far from the others
+# Delta: MORE says the pad word (as INSTANCE: never both) holds more keys' flags: TMR's
+# "running" and "ms" (at ELAPSED with ELAPSED_SET: a time value the skipper moves on), the
+# high-speed counters' "x" and "y" (their inputs at the last execution), NEXT's "left" (at
+# ELAPSED, not a time value)
+MORE = 64
+HAS_RUNNING, RUNNING, HAS_MS, HAS_HX, HX, HAS_HY, HY, HAS_LEFT = (1 << k for k in range(8))
+_MORE_BOOLS = (("running", HAS_RUNNING, RUNNING), ("x", HAS_HX, HX), ("y", HAS_HY, HY))
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
 class Block:
@@ -57,6 +65,20 @@ class Block:
 
     def store64(self, offset: int, value: str) -> None:
         self.f.add(f"store i64 {value}, ptr {self.ptr(offset)}, align 4")
+
+    def more(self, flags: str) -> str:
+        """The pad word's flags (`MORE`), 0 when the flags say it holds none."""
+        f = self.f
+        raw = f.value(f"load i32, ptr {self.ptr(INSTANCE)}")
+        has = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {MORE}')}, 0")
+        return f.value(f"select i1 {has}, i32 {raw}, i32 0")
+
+    def set_more(self, old: str, new: str) -> str:
+        """Store the pad word's flags; CHANGED (for `set_flags`) when they differ, else 0."""
+        f = self.f
+        f.add(f"store i32 {new}, ptr {self.ptr(INSTANCE)}")
+        differs = f.value(f"icmp ne i32 {old}, {new}")
+        return f.value(f"select i1 {differs}, i32 {CHANGED}, i32 0")
 
     def set_flags(self, old: str, new: str) -> None:
         """Store the flags; a block whose flags or values changed (`new` has CHANGED set by
@@ -142,6 +164,14 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
             state[key] = bool(flags & value_bit)
     if flags & (HAS_TIMER | HAS_PLACES):
         _pull_instance(words[base + INSTANCE], flags, state)
+    if flags & MORE:
+        more = words[base + INSTANCE]
+        for key, has, value_bit in _MORE_BOOLS:
+            if more & has:
+                state[key] = bool(more & value_bit)
+        for key, has in (("ms", HAS_MS), ("left", HAS_LEFT)):
+            if more & has:
+                state[key] = _get64(words, base + ELAPSED)
 
 
 def push(words: Any, base: int, state: dict[str, Any]) -> None:
@@ -178,6 +208,19 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
         flags |= HAS_PLACES
         places = state["places"]
         words[base + INSTANCE] = instance_word(places[1], int(places[0]))
+    more = 0
+    for key, has, value_bit in _MORE_BOOLS:
+        if key in state:
+            more |= has | (value_bit if state[key] else 0)
+    # Delta TMR's "ms" (always with "running": the "ms" of other dialects' timers is theirs)
+    for key, has in (("ms", HAS_MS), ("left", HAS_LEFT)):
+        if key in state and (key != "ms" or "running" in state):
+            more |= has
+            flags |= ELAPSED_SET if key == "ms" else 0
+            _set64(words, base + ELAPSED, int(state[key]))
+    if more:
+        flags |= MORE
+        words[base + INSTANCE] = more
     words[base] = flags
 
 

@@ -37,6 +37,11 @@ from ladderworks.core.plc.native import (
     bcd,
     builtins,
     contacts,
+    delta_blocks,
+    delta_extra,
+    delta_float,
+    delta_logic,
+    delta_timers,
     fatek,
     fatek_rows,
     layout,
@@ -92,6 +97,8 @@ ROWS.update(s7_bits.STATEFUL)
 ROWS.update(s7_convert.STATEFUL)
 ROWS.update(s7_timers.STATEFUL)
 ROWS.update(search.STATEFUL)
+ROWS.update(delta_timers.STATEFUL)
+ROWS.update(delta_extra.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
@@ -389,7 +396,16 @@ builtins.EMITTERS.update(words32.EMITTERS)
 builtins.EMITTERS.update(contacts.EMITTERS)
 builtins.EMITTERS.update(fatek.EMITTERS)
 builtins.EMITTERS.update(fatek_rows.EMITTERS)
+builtins.EMITTERS.update(delta_timers.EMITTERS)
+builtins.EMITTERS.update(delta_logic.EMITTERS)
+builtins.EMITTERS.update(delta_blocks.EMITTERS)
+builtins.EMITTERS.update(delta_float.EMITTERS)
+builtins.EMITTERS.update(delta_extra.EMITTERS)
 words.PULSES.update(words32.PULSES)
+words.PULSES.update(delta_logic.PULSES)
+words.PULSES.update(delta_blocks.PULSES)
+words.PULSES.update(delta_float.PULSES)
+words.PULSES.update(delta_extra.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
