@@ -21,6 +21,7 @@ from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.native import unavailable as native_unavailable
 from ladderworks.core.plc.native.scan import NativeScan, native_variant
+from ladderworks.core.plc.relays import SYSTEM_CLOCKS, set_clocks, system_relays
 from ladderworks.core.plc.scan_state import ScanSetup, ScanState
 from ladderworks.core.plc.skipping import ClockRelay, CycleSkipper, clocks_read
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
@@ -34,12 +35,6 @@ RETAINED_AREAS: frozenset[Area] = frozenset({Area.K, Area.D, Area.T, Area.C})
 # Cleared on a cold start; X and F are the machine's and CNC's, never touched by the engine.
 CLEARED_AREAS: tuple[Area, ...] = tuple(
     area for area in Area if area not in RETAINED_AREAS and area not in (Area.X, Area.F))
-
-# System relay R9091: .0 always 0, .1 always 1, .5 a 200 ms clock, .6 a 1 s clock.
-SYSTEM_RELAY = 9091
-# R9091.5 and R9091.6: (bit, period, time on) in ms
-SYSTEM_CLOCKS = ((Address(Area.R, SYSTEM_RELAY, 5), 200, 104),
-                 (Address(Area.R, SYSTEM_RELAY, 6), 1000, 504))
 
 
 def load_binary(data: bytes) -> BinaryProgram:
@@ -288,7 +283,7 @@ class ScanEngine:
 
     def _relays(self, now: int) -> None:
         """The relays a scan at `now` starts with: R9091 and the dialect's (Delta M1000..)."""
-        self._system_relays(now)
+        system_relays(self.memory.areas, now)
         if self._dialect_relays is not None:
             self._dialect_relays(self.memory.areas, now, self._first_scan)
 
@@ -299,18 +294,7 @@ class ScanEngine:
         change within a skip; a program that writes over a relay, as S7's MOVE into %MD0
         over the clock memory byte, leaves its own value)."""
         assert self._clocks_split is not None
-        areas = self.memory.areas
-        for bit, period, on in self._clocks_split[1]:
-            data, mask = areas[bit.area], 1 << (bit.bit or 0)
-            data[bit.byte] = data[bit.byte] | mask if now % period < on \
-                else data[bit.byte] & ~mask & 0xFF
-
-    def _system_relays(self, now: int) -> None:
-        value = 0b10
-        for bit, period, on in SYSTEM_CLOCKS:
-            if now % period < on:
-                value |= 1 << (bit.bit or 0)
-        self.memory.areas[Area.R][SYSTEM_RELAY] = value
+        set_clocks(self.memory.areas, self._clocks_split[1], now)
 
     # -- start and stop ------------------------------------------------------------------
 
