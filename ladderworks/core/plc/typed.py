@@ -69,6 +69,23 @@ def bits_real(bits: int) -> float:
     return float(struct.unpack(">f", (bits & 0xFFFFFFFF).to_bytes(4, "big"))[0])
 
 
+def to_real(value: float) -> float:
+    """A double as a Real stores it: one that rounds past the largest Real is ±infinity
+    (C's cast; `struct.pack` would raise)."""
+    try:
+        struct.pack(">f", value)
+    except OverflowError:
+        return math.copysign(math.inf, value)
+    return value
+
+
+def quiet(value: float) -> float:
+    """A NaN with its quiet bit set (as the FPU returns a NaN operand); another value as is."""
+    if value == value:
+        return value
+    return bits_lreal(lreal_bits(value) | 1 << 51)
+
+
 def lreal_bits(value: float) -> int:
     """An LReal's IEEE-754 double bits as an unsigned 64-bit int."""
     return int.from_bytes(struct.pack(">d", value), "big")
@@ -112,7 +129,7 @@ def write(memory: Memory, address: object, vtype: ValueType, value: int | float)
         memory.set_bit(address, bool(value))
         return
     if vtype is ValueType.REAL:
-        memory.write(address, real_bits(float(value)), 4)
+        memory.write(address, real_bits(to_real(float(value))), 4)
         return
     if vtype is ValueType.LREAL:
         memory.write(address, lreal_bits(float(value)), 8)
@@ -121,9 +138,10 @@ def write(memory: Memory, address: object, vtype: ValueType, value: int | float)
 
 
 def fits(value: int | float, vtype: ValueType) -> bool:
-    """True when a result is valid for its type (an integer in range, a finite Real)."""
-    if vtype is ValueType.REAL:
-        return math.isfinite(value) and abs(value) <= 3.4028234663852886e38
+    """True when a result is valid for its type (an integer in range, a finite Real as
+    written)."""
+    if vtype is ValueType.REAL:  # as written: one rounding to the largest Real fits
+        return math.isfinite(to_real(float(value)))
     if vtype is ValueType.LREAL:
         return math.isfinite(value)
     low, high = limits(vtype)
