@@ -153,7 +153,9 @@ def _arithmetic(name: str, other: Emitter) -> Emitter:
 
     def emit(b: Block, impl: FunctionImpl, params: Sequence[object],
              inputs: list[str]) -> str | None:
-        vtype = value_type(params[0]) if params else None
+        if not params:
+            return None
+        vtype = value_type(params[0])
         if vtype not in typed.FLOATS:
             return other(b, impl, params, inputs)
         assert vtype is not None
