@@ -40,6 +40,7 @@ WIDTH: dict[ValueType, int] = {
     ValueType.USINT: 1, ValueType.UINT: 2, ValueType.UDINT: 4, ValueType.REAL: 4,
     ValueType.TIME: 4, ValueType.BYTE: 1, ValueType.WORD: 2, ValueType.DWORD: 4,
     ValueType.LREAL: 8, ValueType.CHAR: 1}
+_LARGEST_REAL = 3.4028234663852886e38
 FLOATS = frozenset({ValueType.REAL, ValueType.LREAL})
 SIGNED = frozenset({ValueType.SINT, ValueType.INT, ValueType.DINT, ValueType.TIME})
 # names as TIA writes them (case-insensitive), and the IEC timer/counter types
@@ -67,6 +68,23 @@ def real_bits(value: float) -> int:
 def bits_real(bits: int) -> float:
     """The Real whose IEEE-754 bits are `bits`."""
     return float(struct.unpack(">f", (bits & 0xFFFFFFFF).to_bytes(4, "big"))[0])
+
+
+def to_real(value: float) -> float:
+    """A double as a Real stores it: one that rounds past the largest Real is ±infinity
+    (C's cast; `struct.pack` would raise)."""
+    try:
+        struct.pack(">f", value)
+    except OverflowError:
+        return math.copysign(math.inf, value)
+    return value
+
+
+def quiet(value: float) -> float:
+    """A NaN with its quiet bit set (as the FPU returns a NaN operand); another value as is."""
+    if value == value:
+        return value
+    return bits_lreal(lreal_bits(value) | 1 << 51)
 
 
 def lreal_bits(value: float) -> int:
@@ -112,7 +130,11 @@ def write(memory: Memory, address: object, vtype: ValueType, value: int | float)
         memory.set_bit(address, bool(value))
         return
     if vtype is ValueType.REAL:
-        memory.write(address, real_bits(float(value)), 4)
+        try:
+            raw = real_bits(float(value))
+        except OverflowError:  # rounds past the largest Real: C's cast gives ±infinity
+            raw = real_bits(math.copysign(math.inf, value))
+        memory.write(address, raw, 4)
         return
     if vtype is ValueType.LREAL:
         memory.write(address, lreal_bits(float(value)), 8)
@@ -121,9 +143,11 @@ def write(memory: Memory, address: object, vtype: ValueType, value: int | float)
 
 
 def fits(value: int | float, vtype: ValueType) -> bool:
-    """True when a result is valid for its type (an integer in range, a finite Real)."""
-    if vtype is ValueType.REAL:
-        return math.isfinite(value) and abs(value) <= 3.4028234663852886e38
+    """True when a result is valid for its type (an integer in range, a finite Real as
+    written)."""
+    if vtype is ValueType.REAL:  # as written: one rounding to the largest Real fits
+        return abs(value) <= _LARGEST_REAL or (
+            math.isfinite(value) and math.isfinite(to_real(float(value))))
     if vtype is ValueType.LREAL:
         return math.isfinite(value)
     low, high = limits(vtype)

@@ -5,8 +5,7 @@ then `struct.pack`) and from Real to any: not finite → nothing written, W1 = 0
 whole), its low bytes written (a Real of 2**63 or more is a multiple of 2**40: 0); to Real
 the bits (a signalling NaN made quiet, as s7_values.MOVE); to LReal the Real widened (the
 same instruction as C's float → double in Python's struct). A constant is converted now, by
-Python. From LReal it calls back (Python's `round` of any double, `struct.pack` of a double
-too large for a Real raises)."""
+Python. From LReal: s7_real.py (its emitter delegates the rest here)."""
 
 from __future__ import annotations
 
@@ -38,7 +37,7 @@ from ladderworks.core.plc.native.state_block import Block
 _TWO52, _TWO63 = double(2.0 ** 52), double(2.0 ** 63)
 
 
-def _from_integer(f: FunctionText, value: str, target: VT, out: object) -> str:
+def from_integer(f: FunctionText, value: str, target: VT, out: object) -> str:
     """Write i64 `value` converted to `target`; W1 (i1)."""
     if target in typed.FLOATS:
         kind = "double" if target is VT.LREAL else "float"
@@ -50,7 +49,7 @@ def _from_integer(f: FunctionText, value: str, target: VT, out: object) -> str:
     return fits_type(f, value, target)
 
 
-def _constant(f: FunctionText, value: float, target: VT, out: object) -> str:
+def constant(f: FunctionText, value: float, target: VT, out: object) -> str:
     """A Real constant converted now (Python's own steps); W1 (i1)."""
     if target in typed.FLOATS:
         raw = typed.lreal_bits(value) if target is VT.LREAL else \
@@ -119,12 +118,12 @@ def convert(b: Block, impl: FunctionImpl, params: Sequence[object],
     start = f.block
     _, after = f.branch(inputs[0])
     if source is not VT.REAL or (isinstance(operand, Address) and operand.bit is not None):
-        ok = _from_integer(f, read_int(f, operand, source), target, out)  # a bit: 0 or 1
+        ok = from_integer(f, read_int(f, operand, source), target, out)  # a bit: 0 or 1
     elif isinstance(operand, Address):
         ok = _from_real(f, operand, target, out)
     else:
         assert isinstance(operand, int)
-        ok = _constant(f, typed.bits_real(operand), target, out)
+        ok = constant(f, typed.bits_real(operand), target, out)
     ran = f.block
     f.join(after)
     w1 = f.value(f"phi i1 [false, %{start}], [{ok}, %{ran}]")

@@ -48,6 +48,7 @@ from ladderworks.core.plc.native import (
     rotation,
     s7_bits,
     s7_convert,
+    s7_real,
     s7_timers,
     s7_values,
     search,
@@ -95,6 +96,7 @@ ROWS.update(fatek_rows.STATEFUL)
 ROWS.update(s7_values.STATEFUL)
 ROWS.update(s7_bits.STATEFUL)
 ROWS.update(s7_convert.STATEFUL)
+ROWS.update(s7_real.STATEFUL)  # after s7_values, s7_convert: their rows, floats added
 ROWS.update(s7_timers.STATEFUL)
 ROWS.update(search.STATEFUL)
 ROWS.update(delta_timers.STATEFUL)
