@@ -100,6 +100,9 @@ def store(memory: Memory, place: Place, text: str) -> None:
             number = float(text.partition("#")[2] if "#" in text else text)
         except ValueError:
             raise ValueError(text) from None
+        if vtype is typed.ValueType.REAL and math.isfinite(number) and \
+                not typed.fits(number, vtype):  # past the largest Real: TIA refuses it
+            raise ValueError(text)
         typed.write(memory, place.address, vtype, number)
         return
     value = time_ms(text) if vtype is typed.ValueType.TIME else constant_value(text, vtype)

@@ -291,7 +291,7 @@ def test_values_are_shown_and_taken_as_tia_spells_them(type_name: str, text: str
 
 @pytest.mark.parametrize("type_name, text", [
     ("Int", "70000"), ("Int", "abc"), ("String[4]", "abc"), ("LReal", "x"), ("Struct", "1"),
-    ("USInt", "-1"), ("Time", "5")])
+    ("USInt", "-1"), ("Time", "5"), ("Real", "1.0E39"), ("Real", "-3.5e38")])
 def test_a_value_not_of_the_type_is_refused(type_name: str, text: str) -> None:
     from ladderworks.core.address import Address, Area
     from ladderworks.core.dialects.s7.layout import Place
