@@ -41,6 +41,7 @@ from ladderworks.core.plc.native import (
     delta_extra,
     delta_float,
     delta_logic,
+    delta_math,
     delta_timers,
     fatek,
     fatek_rows,
@@ -401,11 +402,13 @@ builtins.EMITTERS.update(delta_logic.EMITTERS)
 builtins.EMITTERS.update(delta_blocks.EMITTERS)
 builtins.EMITTERS.update(delta_float.EMITTERS)
 builtins.EMITTERS.update(delta_extra.EMITTERS)
+builtins.EMITTERS.update(delta_math.EMITTERS)
 words.PULSES.update(words32.PULSES)
 words.PULSES.update(delta_logic.PULSES)
 words.PULSES.update(delta_blocks.PULSES)
 words.PULSES.update(delta_float.PULSES)
 words.PULSES.update(delta_extra.PULSES)
+words.PULSES.update(delta_math.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 

@@ -1,0 +1,114 @@
+"""Delta's float functions made native (native/delta_math.py: DSIN ... DPOW through libm)
+equal their Python implementations exactly: one program of every function (and pulse form,
+radians and degrees) on a Python and a native engine, the operand singles and inputs set before
+every scan, the outputs and flags reset to a pattern; after every scan all memory, the call
+sites' states and the power flow are equal and nothing calls back. Every pair of a grid of
+special singles (infinities, NaNs with payloads, -0, denormals, the largest, the domain and
+overflow edges), then hypothesis-drawn singles and bits."""
+
+from __future__ import annotations
+
+import struct
+from itertools import product
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ladderworks.core.address import Area
+from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.plc.engine import ScanEngine
+from tests.core.plc.test_native_delta import _delta, _pair
+from tests.core.plc.test_native_functions import (
+    disk_cache_in_tmp as disk_cache_in_tmp,  # the autouse fixture: the disk cache in tmp
+)
+from tests.hypothesis_profiles import examples
+
+_ONE = ("DSIN", "DCOS", "DTAN", "DASIN", "DACOS", "DATAN", "DSINH", "DCOSH", "DTANH", "DEXP",
+        "DLN")
+_TWO = ("DLOG", "DPOW")
+
+
+def _lines() -> list[str]:
+    """Every function on D0 (and D2) into D100 ..., with constants too; pulse forms on X1."""
+    lines: list[str] = []
+    for name in _ONE:
+        lines += [f"{name} D0 D{{}}", f"{name} D2 D{{}}", f"{name} K-3 D{{}}",
+                  f"{name}P D4 D{{}}"]
+    for name in _TWO:
+        lines += [f"{name} D0 D2 D{{}}", f"{name} D2 D0 D{{}}", f"{name} D4 D0 D{{}}",
+                  f"{name} K10 D0 D{{}}", f"{name} D0 K3 D{{}}", f"{name} K-2 D2 D{{}}",
+                  f"{name}P D0 D4 D{{}}", f"{name} D0 D0 D{{}}"]
+    return [line.format(100 + 2 * k) for k, line in enumerate(lines)]
+
+
+LINES = _lines()
+OUT = 100 + 2 * len(LINES)  # the bytes from D100 the rows write
+# M1018 on X0 (degrees), the plain rows under M1000, the pulse forms under X1
+PROGRAM = "LD X0\nOUT M1018\n" + "".join(
+    f"LD {'X1' if 'P ' in line else 'M1000'}\n{line}\n" for line in LINES)
+_FLAGS = [DEVICES.bit(f"M{n}") for n in (1020, 1021, 1022, 1067, 1068)]
+_D = DEVICES.word("D0")[0]
+
+# singles: infinities, NaNs (signalling, quiet, payloads), zeros, denormals, the largest,
+# +-1 and their neighbours (asin, log), 10, 2, 0.5, -0.5, -2.5 (pow), exp/sinh overflow edges
+# (709.78, 710.5 as doubles: single near them), 88.7 (the single's overflow), huge values
+SPECIAL = (0x7F800000, 0xFF800000, 0x7F800001, 0xFFC00123, 0x7FC00000, 0x00000000,
+           0x80000000, 0x00000001, 0x807FFFFF, 0x00800000, 0x7F7FFFFF, 0xFF7FFFFF,
+           0x3F800000, 0xBF800000, 0x3F800001, 0x3F7FFFFF, 0xBF800001, 0x41200000,
+           0x40000000, 0x3F000000, 0xBF000000, 0xC0200000, 0x44317000, 0x4431E000,
+           0x44318000, 0x42B17218, 0x42B20000, 0xC4317000, 0x4B000001, 0xCB000001,
+           0x43340000, 0x42B40000, 0xC2B40000, 0x5F000000, 0x40490FDB)
+_single = st.one_of(st.sampled_from(SPECIAL), st.integers(0, 0xFFFF_FFFF),
+                    st.floats(width=32).map(lambda x: int.from_bytes(struct.pack("<f", x),
+                                                                     "little")))
+_scans = st.lists(st.tuples(_single, _single, _single, st.integers(0, 3)),
+                  min_size=1, max_size=12)
+
+
+def _scan(engines: tuple[ScanEngine, ScanEngine], singles: tuple[int, int, int],
+          inputs: int, step: int) -> None:
+    python, native = engines
+    for engine in engines:
+        memory = engine.memory
+        for k, bits in enumerate(singles):
+            memory.write(DEVICES.word(f"D{2 * k}")[0], bits, 4)
+        out = DEVICES.word("D100")[0]
+        memory.areas[Area.D][out.byte:out.byte + 2 * (OUT - 100)] = bytes(
+            (step + k) % 256 for k in range(2 * (OUT - 100)))
+        for flag in _FLAGS:
+            memory.set_bit(flag, False)
+        memory.areas[Area.X][0] = inputs
+        engine.scan()
+    assert native.memory.areas == python.memory.areas, (step, [hex(s) for s in singles])
+    assert native.call_states() == python.call_states(), step
+    if python.monitored:
+        assert native.power_flow == python.power_flow, step
+
+
+def test_every_pair_of_special_singles_runs_natively_as_in_python() -> None:
+    """Every (D0, D2) of SPECIAL (D4 the next), radians and degrees, fast."""
+    engines = _pair(_delta(PROGRAM), False, 10)
+    for step, (a, b) in enumerate(product(SPECIAL, SPECIAL)):
+        _scan(engines, (a, b, SPECIAL[(step + 1) % len(SPECIAL)]), step % 4, step)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@settings(max_examples=examples(60), deadline=None)
+@given(scans=_scans)
+def test_delta_float_functions_run_natively_as_in_python(monitored: bool, scans: list
+                                                         ) -> None:
+    engines = _pair(_delta(PROGRAM), monitored, 10)
+    for step, (a, b, c, inputs) in enumerate(scans):
+        _scan(engines, (a, b, c), inputs, step)
+
+
+def test_the_float_functions_are_native() -> None:
+    """No row of the program calls back (as `_pair` asserts), and the errors are seen: DLN
+    of 0 is the operation error, D kept."""
+    python, native = _pair(_delta("LD M1000\nDLN D0 D2\n"), False, 10)
+    for engine in (python, native):
+        engine.memory.write(DEVICES.word("D2")[0], 7, 4)
+        engine.scan()
+        assert engine.memory.bit(DEVICES.bit("M1067")) == 1
+        assert engine.memory.read(DEVICES.word("D2")[0], 4) == 7
