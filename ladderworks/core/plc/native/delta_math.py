@@ -108,9 +108,8 @@ def _math_1(name: str, angle_in: bool = False, angle_out: bool = False) -> Prepa
             number = _select(f, degrees, f.value(f"fmul double {number}, {_TO_RADIANS}"),
                              number)
         result = _call(f, name, number)
-        finite = _finite(f, number)
-        bad = _or(f, f.value(f"and i1 {_nan(f, result)}, {f.value(f'fcmp ord double {number}, 0.0')}"),
-                  _and(f, _infinite(f, result), finite))
+        # a NaN result (ValueError from a non-NaN argument) is `_prepared`'s error anyway
+        bad = _and(f, _infinite(f, result), _finite(f, number))
         if angle_out:
             result = _select(f, degrees, f.value(f"fmul double {result}, {_TO_DEGREES}"),
                              result)
