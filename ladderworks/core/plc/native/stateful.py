@@ -40,8 +40,9 @@ from ladderworks.core.plc.native import (
     delta_blocks,
     delta_extra,
     delta_float,
+    delta_libm,
     delta_logic,
-    delta_math,
+    delta_scale32,
     delta_timers,
     fatek,
     fatek_rows,
@@ -402,13 +403,15 @@ builtins.EMITTERS.update(delta_logic.EMITTERS)
 builtins.EMITTERS.update(delta_blocks.EMITTERS)
 builtins.EMITTERS.update(delta_float.EMITTERS)
 builtins.EMITTERS.update(delta_extra.EMITTERS)
-builtins.EMITTERS.update(delta_math.EMITTERS)
+builtins.EMITTERS.update(delta_libm.EMITTERS)
+builtins.EMITTERS.update(delta_scale32.EMITTERS)
 words.PULSES.update(words32.PULSES)
 words.PULSES.update(delta_logic.PULSES)
 words.PULSES.update(delta_blocks.PULSES)
 words.PULSES.update(delta_float.PULSES)
 words.PULSES.update(delta_extra.PULSES)
-words.PULSES.update(delta_math.PULSES)
+words.PULSES.update(delta_libm.PULSES)
+words.PULSES.update(delta_scale32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 

@@ -1,4 +1,4 @@
-"""Delta's float functions made native (native/delta_math.py: DSIN ... DPOW through libm)
+"""Delta's float functions made native (native/delta_libm.py: DSIN ... DPOW through libm)
 equal their Python implementations exactly: one program of every function (and pulse form,
 radians and degrees) on a Python and a native engine, the operand singles and inputs set before
 every scan, the outputs and flags reset to a pattern; after every scan all memory, the call
@@ -112,3 +112,52 @@ def test_the_float_functions_are_native() -> None:
         engine.scan()
         assert engine.memory.bit(DEVICES.bit("M1067")) == 1
         assert engine.memory.read(DEVICES.word("D2")[0], 4) == 7
+
+
+# DSCLP (native/delta_scale32.py): S, the table T (4 pairs) and constants; a table from C200
+# (C200 ... C206), one past D's end (the error); S and the table's values drawn, the limits often
+SCALE = ("LD M1000\nDSCLP D0 D2 D20\nDSCLP K-7 D2 D22\nDSCLP D10 C200 D24\nDSCLP C207 D2 C210\n"
+         "DSCLP D0 D9996 D26\nLD X1\nDSCLPP D0 D2 D28\nDSCLPP D10 D12 D30\n")
+_EDGE32 = (-(1 << 31), (1 << 31) - 1, 0, 1, -1, 1000, -1000, (1 << 31) - 2, -(1 << 31) + 1)
+_int32 = st.one_of(st.sampled_from(_EDGE32), st.integers(-(1 << 31), (1 << 31) - 1))
+
+
+def _scale_scan(engines: tuple[ScanEngine, ScanEngine], values: list[int], inputs: int,
+                equal: bool, step: int) -> None:
+    python, native = engines
+    for engine in engines:
+        memory = engine.memory
+        for k, number in enumerate(values[:9]):
+            memory.write(DEVICES.word(f"D{2 * k}")[0], number, 4)
+        if equal:  # T = T+2: the error
+            memory.write(DEVICES.word("D14")[0], values[6], 4)
+            memory.write(DEVICES.word("D4")[0], values[1], 4)
+        for k, number in enumerate(values[9:]):
+            memory.write(DEVICES.word(f"C20{k}")[0], number, 4)
+        for flag in _FLAGS:
+            memory.set_bit(flag, False)
+        memory.areas[Area.X][0] = inputs
+        engine.scan()
+    assert native.memory.areas == python.memory.areas, (step, values)
+    assert native.call_states() == python.call_states(), step
+    if python.monitored:
+        assert native.power_flow == python.power_flow, step
+
+
+def test_dsclp_at_the_limits_runs_natively_as_in_python() -> None:
+    """S, T, T+2, T+4, T+6 each -2^31, -1, 0 or 2^31-1 (products past 2^63)."""
+    engines = _pair(_delta(SCALE), False, 10)
+    limits = (-(1 << 31), -1, 0, (1 << 31) - 1)
+    for step, (s, t, b, h, lo) in enumerate(product(limits, repeat=5)):
+        values = [s, t, b, h, lo, t, b, h, lo, s, b, t, lo, h, 0, 0, 0, 0]
+        _scale_scan(engines, values, step % 4, False, step)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@settings(max_examples=examples(100), deadline=None)
+@given(scans=st.lists(st.tuples(st.lists(_int32, min_size=18, max_size=18),
+                                st.integers(0, 3), st.booleans()), min_size=1, max_size=8))
+def test_dsclp_runs_natively_as_in_python(monitored: bool, scans: list) -> None:
+    engines = _pair(_delta(SCALE), monitored, 10)
+    for step, (values, inputs, equal) in enumerate(scans):
+        _scale_scan(engines, values, inputs, equal, step)
