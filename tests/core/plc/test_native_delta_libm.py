@@ -161,3 +161,56 @@ def test_dsclp_runs_natively_as_in_python(monitored: bool, scans: list) -> None:
     engines = _pair(_delta(SCALE), monitored, 10)
     for step, (values, inputs, equal) in enumerate(scans):
         _scale_scan(engines, values, inputs, equal, step)
+
+
+# DEADD ... DEDIV of two different pairs (delta_float.py): two NaNs give the first's NaN
+ARITHMETIC = "".join(f"LD M1000\n{name} D0 D2 D{20 + 8 * k}\n{name} D2 D0 D{22 + 8 * k}\n"
+                     f"{name} D4 D0 D{24 + 8 * k}\nLD X1\n{name}P D0 D4 D{26 + 8 * k}\n"
+                     for k, name in enumerate(("DEADD", "DESUB", "DEMUL", "DEDIV")))
+_nan = st.one_of(st.integers(0x7F800001, 0x7FFFFFFF), st.integers(0xFF800001, 0xFFFFFFFF))
+
+
+def _arithmetic_scan(engines: tuple[ScanEngine, ScanEngine], singles: tuple[int, ...],
+                     inputs: int, step: int) -> None:
+    python, native = engines
+    for engine in engines:
+        memory = engine.memory
+        for k, bits in enumerate(singles):
+            memory.write(DEVICES.word(f"D{2 * k}")[0], bits, 4)
+        for flag in _FLAGS:
+            memory.set_bit(flag, False)
+        memory.areas[Area.X][0] = inputs
+        engine.scan()
+    assert native.memory.areas == python.memory.areas, (step, [hex(s) for s in singles])
+    assert native.call_states() == python.call_states(), step
+
+
+def test_two_pairs_of_special_singles_add_natively_as_in_python() -> None:
+    """Every (D0, D2) of SPECIAL, each row run many times (CPython's own add and multiply
+    keep the other NaN before their bytecode is specialized, the first after)."""
+    engines = _pair(_delta(ARITHMETIC), False, 10)
+    for step, (a, b) in enumerate(product(SPECIAL, SPECIAL)):
+        _arithmetic_scan(engines, (a, b, SPECIAL[(step + 3) % len(SPECIAL)]), step % 4, step)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@settings(max_examples=examples(60), deadline=None)
+@given(scans=st.lists(st.tuples(st.one_of(_nan, _single), st.one_of(_nan, _single),
+                                st.one_of(_nan, _single), st.integers(0, 3)),
+                      min_size=1, max_size=8))
+def test_two_pairs_add_natively_as_in_python(monitored: bool, scans: list) -> None:
+    engines = _pair(_delta(ARITHMETIC), monitored, 10)
+    for step, (a, b, c, inputs) in enumerate(scans):
+        _arithmetic_scan(engines, (a, b, c), inputs, step)
+
+
+def test_two_nans_give_the_first_nan_every_time() -> None:
+    """Python's DEADD of two NaNs is the same before and after CPython specializes `a + b`
+    (its eighth run): the first operand's NaN, quieted."""
+    python = ScanEngine(_delta("LD M1000\nDEADD D0 D2 D4\nDEMUL D2 D0 D6\n"))
+    for _ in range(20):
+        python.memory.write(DEVICES.word("D0")[0], 0x7F800123, 4)
+        python.memory.write(DEVICES.word("D2")[0], 0xFFC00456, 4)
+        python.scan()
+        assert python.memory.read(DEVICES.word("D4")[0], 4) == 0x7FC00123
+        assert python.memory.read(DEVICES.word("D6")[0], 4) == 0xFFC00456
