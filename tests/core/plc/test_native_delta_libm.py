@@ -16,13 +16,23 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderworks.core.address import Area
+from ladderworks.core.compiler import compile_program
+from ladderworks.core.compiler.binary import decode
 from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.il import parse_file
 from ladderworks.core.plc.engine import ScanEngine
-from tests.core.plc.test_native_delta import _delta, _pair
+from tests.core.plc.test_native_delta import (
+    _delta,
+    _pair,
+)
+from tests.core.plc.test_native_delta import (
+    test_real_delta_programs_run_natively_as_in_python as _real_run,  # not collected here
+)
 from tests.core.plc.test_native_functions import (
     disk_cache_in_tmp as disk_cache_in_tmp,  # the autouse fixture: the disk cache in tmp
 )
 from tests.hypothesis_profiles import examples
+from tests.real_programs import real_programs_dir
 
 _ONE = ("DSIN", "DCOS", "DTAN", "DASIN", "DACOS", "DATAN", "DSINH", "DCOSH", "DTANH", "DEXP",
         "DLN")
@@ -214,3 +224,15 @@ def test_two_nans_give_the_first_nan_every_time() -> None:
         python.scan()
         assert python.memory.read(DEVICES.word("D4")[0], 4) == 0x7FC00123
         assert python.memory.read(DEVICES.word("D6")[0], 4) == 0xFFC00456
+
+
+@pytest.mark.parametrize("name", ["NIRMALKUMAR_compliment", "NIRMALKUMAR_float"])
+def test_real_float_programs_run_natively_without_calling_back(name: str) -> None:
+    """The WPLSoft projects (read from ../shared) whose DEXP, DLN, DSIN, DASIN, DLOG and
+    DEADD of two pairs called back: none does now, and they run as in Python (200 scans
+    fast and monitored, then skipping: test_native_delta.py's test)."""
+    path = real_programs_dir() / "delta" / f"{name}.dvp"
+    compiled = compile_program(parse_file(path).program)
+    assert compiled.binary is not None
+    _pair(decode(compiled.binary), False, 10)  # asserts that nothing calls back
+    _real_run(name)
