@@ -236,3 +236,51 @@ def test_real_float_programs_run_natively_without_calling_back(name: str) -> Non
     assert compiled.binary is not None
     _pair(decode(compiled.binary), False, 10)  # asserts that nothing calls back
     _real_run(name)
+
+
+# PLSY/DPLSY (native/delta_pulses.py): frequencies and counts from the data (drawn each scan)
+# and constants, on Y0/Y1 (two sites on one output), an output of neither (the error), a
+# subroutine's PLSY run twice a scan (counted once); D1030-D1033 now and then written
+PULSES = ("LD X0\nPLSY D0 D1 Y0\nLD X1\nDPLSY D2 D4 Y1\nLD X2\nPLSY K1000 K50 Y0\n"
+          "LD X3\nPLSY K10 K0 Y1\nLD X4\nPLSY D6 K7 Y2\nLD X5\nDPLSY K200000 D8 Y1\n"
+          "LD X6\nCALL P1\nLD X6\nCALL P1\nLD X7\nPLSY D10 K3 Y0\nFEND\n"
+          "P1\nLD X10\nDPLSY K200000 K2147483647 Y0\nSRET\n")
+_HERTZ = st.sampled_from((0, 1, 3, 7, 1000, 65535, 0xFFFF_FFFF, 0x7FFF_FFFF, 0x8000_0000))
+_pulse_scans = st.lists(st.tuples(st.lists(_HERTZ, min_size=6, max_size=6),
+                                  st.integers(0, 0x7FF), st.booleans(),
+                                  st.integers(0, 0xFFFF_FFFF)), min_size=1, max_size=30)
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+@settings(max_examples=examples(60), deadline=None)
+@given(scans=_pulse_scans, period=st.sampled_from((1, 8, 30, 130, 5000)))
+def test_plsy_runs_natively_as_in_python(monitored: bool, scans: list, period: int) -> None:
+    python, native = _pair(_delta(PULSES), monitored, period)
+    for values, inputs, written, count in scans:
+        for engine in (python, native):
+            memory = engine.memory
+            for k, number in enumerate(values):
+                memory.write(DEVICES.word(f"D{2 * k}")[0], number, 4)
+            if written:
+                memory.write(DEVICES.word("D1030")[0], count, 4)
+                memory.write(DEVICES.word("D1032")[0], count ^ 0x8000_0000, 4)
+            memory.areas[Area.X][0], memory.areas[Area.X][1] = inputs & 0xFF, inputs >> 8
+            engine.scan()
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
+        assert native._ctx.wake_ms == python._ctx.wake_ms
+        if monitored:
+            assert native.power_flow == python.power_flow
+
+
+def test_a_plsy_is_skipped_natively_as_python_runs_it() -> None:
+    """The native skipper moves PLSY's "ms" and "at" on (time values) as every scan would."""
+    binary = _delta("LD X0\nPLSY K3 K40 Y0\nLD X1\nDPLSY K1 K0 Y1\n")
+    python, native = _pair(binary, False, 8, every_scan=False)
+    for low, ms in ((1, 500), (3, 20000), (0, 300), (2, 4000), (3, 60000)):
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = low
+            engine.step(ms)
+        assert native.memory.areas == python.memory.areas
+        assert native.call_states() == python.call_states()
+    assert native.skipped > 0

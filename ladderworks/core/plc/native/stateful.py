@@ -42,6 +42,7 @@ from ladderworks.core.plc.native import (
     delta_float,
     delta_libm,
     delta_logic,
+    delta_pulses,
     delta_scale32,
     delta_timers,
     fatek,
@@ -101,6 +102,7 @@ ROWS.update(s7_timers.STATEFUL)
 ROWS.update(search.STATEFUL)
 ROWS.update(delta_timers.STATEFUL)
 ROWS.update(delta_extra.STATEFUL)
+ROWS.update(delta_pulses.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
