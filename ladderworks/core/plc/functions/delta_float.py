@@ -8,7 +8,8 @@ integer S (DFLT: the 32-bit S) as a float into D, D+1. INT S D: the float S with
 fraction (toward zero) into the 16-bit D (DINT: 32-bit); outside the range: operation error,
 D kept. DEADD ... DEDIV: the float result, rounded to single precision; M1020 when it is 0,
 M1021 when it is below the smallest normal float (it is kept), M1022 when it overflows (the
-largest float is written, with its sign); a division by 0: operation error, D kept. DECMP /
+largest float is written, with its sign); of two NaNs, the first's; a division by 0:
+operation error, D kept. DECMP /
 DEZCP: as CMP / ZCP on floats. DSIN ... DTAN take, DASIN ... DATAN give, degrees while M1018
 is on (else radians); a value outside a function's domain (DLN of 0, DASIN of 2, DLOG base 1)
 is an operation error, D kept. FLD= ... compare two floats as LD= compares words.
@@ -109,6 +110,8 @@ def _arithmetic(memory: Memory, params: tuple, op: str) -> None:
         operation_error(memory)
         return
     exact = a + b if op == "+" else a - b if op == "-" else a * b if op == "*" else a / b
+    if math.isnan(a) and math.isnan(b):  # the first's NaN, as x86 (CPython's own order varies)
+        exact = a
     stored = to_float(bits_of(exact))
     memory.set_bit(M1020, stored == 0)
     memory.set_bit(M1021, 0 < abs(stored) < SMALLEST)

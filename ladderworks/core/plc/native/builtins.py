@@ -34,13 +34,16 @@ _SIZES = memory_sizes()
 _I64 = (-(1 << 63), (1 << 63) - 1)
 
 Emitter = Callable[[FunctionText, Sequence[object], list[str]], str | None]
+_LIBM = ("sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "log")
 
 
 def declarations() -> list[str]:
     """The IR declarations the native functions use."""
     return ["declare void @llvm.memmove.p0.p0.i64(ptr, ptr, i64, i1)",
             *(f"declare i{n} @llvm.bswap.i{n}(i{n})" for n in (16, 32, 64)),  # S7's values
-            "declare double @llvm.sqrt.f64(double)"]  # Delta's DESQR
+            "declare double @llvm.sqrt.f64(double)",  # Delta's DESQR
+            "declare double @llvm.fabs.f64(double)", "declare double @pow(double, double)",
+            *(f"declare double @{n}(double)" for n in _LIBM)]  # Delta's float functions
 
 
 def _fits(address: object, width: int) -> bool:

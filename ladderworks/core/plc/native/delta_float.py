@@ -6,11 +6,9 @@ compares them (ordered tests, `une` for <>: a NaN is unequal to all); FLT's inte
 as a double and rounded once to a single (`fptrunc`, as Python's pack: below 2^31, never
 clamped); INT/DINT test the range on the double first; DEMOV works on the bits: an infinity
 becomes the largest single with its sign, a NaN is quieted (bit 22 on) with its payload
-kept, as Python's unpack and pack do (IEEE 754's conversions); DEADD ... DEDIV with a
-constant operand or one pair twice (`_arithmetic`); DESQR (`llvm.sqrt`: correctly rounded,
-as C's sqrt); DRAD/DDEG (one product by CPython's constant). Not native: DEADD ... DEDIV of two
-different pairs (with two NaN operands the payload kept depends on the operand order the C
-compiler chose for CPython's float arithmetic) and the other functions (libm's)."""
+kept, as Python's unpack and pack do (IEEE 754's conversions); DEADD ... DEDIV (of two
+NaNs the first's: `_arithmetic`); DESQR (`llvm.sqrt`: correctly rounded,
+as C's sqrt); DRAD/DDEG (one product by CPython's constant). The other functions: delta_libm.py."""
 
 from __future__ import annotations
 
@@ -198,17 +196,15 @@ def _scaled(factor: float) -> Prepare:
 
 
 def _arithmetic(operator: str) -> Prepare:
-    """DEADD ... DEDIV with a constant operand (or one pair twice): at most one NaN operand,
-    whose quieted NaN the hardware passes on in either order (IEEE 754), so the double result
-    is Python's; rounded to a single (past the largest: the largest, with its sign) with
-    M1020-M1022 as `_arithmetic` sets them; a division by 0: the error. Two different pairs
-    (two NaNs: the payload kept is the first operand's of CPython's own code) call back."""
+    """DEADD ... DEDIV: one NaN operand: its quieted NaN, which the hardware passes on in
+    either operand order; two NaNs: the first (`select`: as `_arithmetic` chooses, the operand
+    order of the compiled instruction not mattering); so the double result is Python's; rounded
+    to a single (past the largest: the largest, with its sign) with M1020-M1022 as
+    `_arithmetic` sets them; a division by 0: the error."""
     dividing = operator == "fdiv"
 
     def prepare(params: Sequence[object]) -> Body:
         s1, s2, output = params
-        if isinstance(s1, Address) and isinstance(s2, Address) and s1 != s2:
-            raise _Refused
         first, second, store = _float(s1), _float(s2), writer(output, True)
         for flag in (M1020, M1021, M1022, M1067, M1068):
             _place(flag, 1)
@@ -217,7 +213,10 @@ def _arithmetic(operator: str) -> Prepare:
             a, b = first(f), second(f)
 
             def run() -> None:
-                _rounded(f, f.value(f"{operator} double {a}, {b}"), store)
+                both = f.value(f"and i1 {f.value(f'fcmp uno double {a}, 0.0')}, "
+                               f"{f.value(f'fcmp uno double {b}, 0.0')}")
+                exact = f.value(f"{operator} double {a}, {b}")
+                _rounded(f, f.value(f"select i1 {both}, double {a}, double {exact}"), store)
 
             if dividing:
                 checked(f, f.value(f"fcmp oeq double {b}, 0.0"), run)

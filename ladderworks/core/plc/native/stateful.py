@@ -40,7 +40,10 @@ from ladderworks.core.plc.native import (
     delta_blocks,
     delta_extra,
     delta_float,
+    delta_libm,
     delta_logic,
+    delta_pulses,
+    delta_scale32,
     delta_timers,
     fatek,
     fatek_rows,
@@ -101,6 +104,7 @@ ROWS.update(s7_timers.STATEFUL)
 ROWS.update(search.STATEFUL)
 ROWS.update(delta_timers.STATEFUL)
 ROWS.update(delta_extra.STATEFUL)
+ROWS.update(delta_pulses.STATEFUL)
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
@@ -403,11 +407,15 @@ builtins.EMITTERS.update(delta_logic.EMITTERS)
 builtins.EMITTERS.update(delta_blocks.EMITTERS)
 builtins.EMITTERS.update(delta_float.EMITTERS)
 builtins.EMITTERS.update(delta_extra.EMITTERS)
+builtins.EMITTERS.update(delta_libm.EMITTERS)
+builtins.EMITTERS.update(delta_scale32.EMITTERS)
 words.PULSES.update(words32.PULSES)
 words.PULSES.update(delta_logic.PULSES)
 words.PULSES.update(delta_blocks.PULSES)
 words.PULSES.update(delta_float.PULSES)
 words.PULSES.update(delta_extra.PULSES)
+words.PULSES.update(delta_libm.PULSES)
+words.PULSES.update(delta_scale32.PULSES)
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
 
 
