@@ -155,38 +155,53 @@ def _results(output: object) -> list[Address]:
     return [_place(bit_after(output, k), 1) for k in range(3)]
 
 
-def _cmp(params: Sequence[object]) -> Callable[[FunctionText], None]:
-    s1, s2, output = params
-    first, second, bits = _source(s1), _source(s2), _results(output)
+def compared(measure: Callable[[object], int] | None = None) -> Prepare:
+    """CMP S1 S2 D: D, D+1, D+2 on for S1 > S2, =, <; `measure` the operands' width as
+    `_source` takes it (words32's: 32 bits)."""
 
-    def body(f: FunctionText) -> None:
-        a, c = first(f), second(f)
-        for place, test in zip(bits, ("sgt", "eq", "slt"), strict=True):
-            _bit(f, place, f.value(f"icmp {test} i64 {a}, {c}"))
+    def prepare(params: Sequence[object]) -> Callable[[FunctionText], None]:
+        s1, s2, output = params
+        first, second = _source(s1, measure), _source(s2, measure)
+        bits = _results(output)
 
-    return body
+        def body(f: FunctionText) -> None:
+            a, c = first(f), second(f)
+            for place, test in zip(bits, ("sgt", "eq", "slt"), strict=True):
+                _bit(f, place, f.value(f"icmp {test} i64 {a}, {c}"))
+
+        return body
+
+    return prepare
 
 
-def _zcp(params: Sequence[object]) -> Callable[[FunctionText], None]:
-    low, high, source, output = params
-    lo, hi, read, bits = _source(low), _source(high), _source(source), _results(output)
+def zone_compared(measure: Callable[[object], int] | None = None) -> Prepare:
+    """ZCP S1 S2 S D: D, D+1, D+2 on for S below S1, within, above S2; `measure` as
+    `compared`'s."""
 
-    def body(f: FunctionText) -> None:
-        lower, upper, s = lo(f), hi(f), read(f)
-        below = f.value(f"icmp slt i64 {s}, {lower}")
-        above = f.value(f"and i1 {f.value(f'xor i1 {below}, true')}, "
-                        f"{f.value(f'icmp sgt i64 {s}, {upper}')}")
-        inside = f.value(f"xor i1 {f.value(f'or i1 {below}, {above}')}, true")
-        for place, value in zip(bits, (below, inside, above), strict=True):
-            _bit(f, place, value)
+    def prepare(params: Sequence[object]) -> Callable[[FunctionText], None]:
+        low, high, source, output = params
+        lo, hi, read = (_source(p, measure) for p in (low, high, source))
+        bits = _results(output)
 
-    return body
+        def body(f: FunctionText) -> None:
+            lower, upper, s = lo(f), hi(f), read(f)
+            below = f.value(f"icmp slt i64 {s}, {lower}")
+            above = f.value(f"and i1 {f.value(f'xor i1 {below}, true')}, "
+                            f"{f.value(f'icmp sgt i64 {s}, {upper}')}")
+            inside = f.value(f"xor i1 {f.value(f'or i1 {below}, {above}')}, true")
+            for place, value in zip(bits, (below, inside, above), strict=True):
+                _bit(f, place, value)
+
+        return body
+
+    return prepare
 
 
 _PREPARE: dict[Operation, Callable[[Sequence[object]], Callable[[FunctionText], None]]] = {
     Operation.MOVE: _mov, Operation.ADD: _add_sub("add"), Operation.SUBTRACT: _add_sub("sub"),
     Operation.MULTIPLY: _mul, Operation.DIVIDE: _div, Operation.INCREMENT: _step(1),
-    Operation.DECREMENT: _step(-1), Operation.COMPARE: _cmp, Operation.ZONE_COMPARE: _zcp,
+    Operation.DECREMENT: _step(-1), Operation.COMPARE: compared(),
+    Operation.ZONE_COMPARE: zone_compared(),
 }
 
 

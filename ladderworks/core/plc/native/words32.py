@@ -20,7 +20,6 @@ from ladderworks.core.plc.native.words import (
     _bit,
     _place,
     _Refused,
-    _results,
     _row,
     _write,
     divided,
@@ -96,38 +95,10 @@ def _step(amount: int) -> Prepare:
     return prepare
 
 
-def _cmp(params: Sequence[object]) -> Body:
-    s1, s2, output = params
-    first, second, bits = _source(s1), _source(s2), _results(output)
-
-    def body(f: FunctionText) -> None:
-        a, c = first(f), second(f)
-        for place, test in zip(bits, ("sgt", "eq", "slt"), strict=True):
-            _bit(f, place, f.value(f"icmp {test} i64 {a}, {c}"))
-
-    return body
-
-
-def _zcp(params: Sequence[object]) -> Body:
-    low, high, source, output = params
-    lo, hi, read, bits = _source(low), _source(high), _source(source), _results(output)
-
-    def body(f: FunctionText) -> None:
-        lower, upper, s = lo(f), hi(f), read(f)
-        below = f.value(f"icmp slt i64 {s}, {lower}")
-        above = f.value(f"and i1 {f.value(f'xor i1 {below}, true')}, "
-                        f"{f.value(f'icmp sgt i64 {s}, {upper}')}")
-        inside = f.value(f"xor i1 {f.value(f'or i1 {below}, {above}')}, true")
-        for place, value in zip(bits, (below, inside, above), strict=True):
-            _bit(f, place, value)
-
-    return body
-
-
 _PREPARE: dict[str, Prepare] = {
     "move": _move, "add": _add_sub("add"), "subtract": _add_sub("sub"), "multiply": _mul,
-    "divide": _div, "increment": _step(1), "decrement": _step(-1), "compare": _cmp,
-    "zone": _zcp,
+    "divide": _div, "increment": _step(1), "decrement": _step(-1),
+    "compare": words.compared(_width), "zone": words.zone_compared(_width),
 }
 
 
