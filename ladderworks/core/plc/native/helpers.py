@@ -133,6 +133,30 @@ fail:
   ret i32 -1
 }}
 """
+# listed(words, mark word, entry, changed list): an edge memory (entry -1 - n) or a block
+# (entry k) joins the changed list once: unless its mark word says it is there, the mark is
+# set and the entry written at the list's end
+_LISTED = f"""
+define private void @listed(ptr %st, i32 %mark, i32 %item, i32 %dirty) {{
+entry:
+  %pm = getelementptr i32, ptr %st, i32 %mark
+  %m = load i32, ptr %pm
+  %unmarked = icmp eq i32 %m, 0
+  br i1 %unmarked, label %list, label %done
+list:
+  store i32 1, ptr %pm
+  %pc = getelementptr i32, ptr %st, i32 {layout.DIRTY}
+  %c = load i32, ptr %pc
+  %di = add i32 %dirty, %c
+  %pd = getelementptr i32, ptr %st, i32 %di
+  store i32 %item, ptr %pd
+  %c1 = add i32 %c, 1
+  store i32 %c1, ptr %pc
+  br label %done
+done:
+  ret void
+}}
+"""
 # move(words, growth, count, times, first block, marks, changed list): each block's time
 # values grown `times` times their growth (`grow`'s triples), the block in the changed list
 _MOVE = f"""
@@ -141,7 +165,7 @@ define void @move(ptr %st, ptr %g, i32 %count, i64 %times, i32 %first, i32 %mark
 entry:
   br label %loop
 loop:
-  %k = phi i32 [0, %entry], [%k1, %next]
+  %k = phi i32 [0, %entry], [%k1, %body]
   %fin = icmp eq i32 %k, %count
   br i1 %fin, label %exit, label %body
 body:
@@ -168,21 +192,7 @@ body:
   %a2 = add i64 %a, %ga
   store i64 %a2, ptr %pa, align 4
   %mi = add i32 %marks, %blk
-  %pm = getelementptr i32, ptr %st, i32 %mi
-  %m = load i32, ptr %pm
-  %unmarked = icmp eq i32 %m, 0
-  br i1 %unmarked, label %list, label %next
-list:
-  store i32 1, ptr %pm
-  %pc = getelementptr i32, ptr %st, i32 {layout.DIRTY}
-  %c = load i32, ptr %pc
-  %di = add i32 %dirty, %c
-  %pd = getelementptr i32, ptr %st, i32 %di
-  store i32 %blk, ptr %pd
-  %c1 = add i32 %c, 1
-  store i32 %c1, ptr %pc
-  br label %next
-next:
+  call void @listed(ptr %st, i32 %mi, i32 %blk, i32 %dirty)
   %k1 = add i32 %k, 1
   br label %loop
 exit:
@@ -196,7 +206,6 @@ _PUT = f"""
 define void @put(ptr %st, ptr %src, i32 %edges, i32 %blocks, i32 %first, i32 %marks,
                  i32 %dirty) {{
 entry:
-  %pc = getelementptr i32, ptr %st, i32 {layout.DIRTY}
   br label %eloop
 eloop:
   %n = phi i32 [0, %entry], [%n1, %enext]
@@ -214,19 +223,8 @@ ecopy:
   store i32 %vs, ptr %pw
   %emi = sub i32 %marks, 1
   %emi2 = sub i32 %emi, %n
-  %pem = getelementptr i32, ptr %st, i32 %emi2
-  %em = load i32, ptr %pem
-  %eun = icmp eq i32 %em, 0
-  br i1 %eun, label %elist, label %enext
-elist:
-  store i32 1, ptr %pem
-  %ec = load i32, ptr %pc
-  %edi = add i32 %dirty, %ec
-  %ped = getelementptr i32, ptr %st, i32 %edi
   %entry_e = sub i32 -1, %n
-  store i32 %entry_e, ptr %ped
-  %ec1 = add i32 %ec, 1
-  store i32 %ec1, ptr %pc
+  call void @listed(ptr %st, i32 %emi2, i32 %entry_e, i32 %dirty)
   br label %enext
 enext:
   %n1 = add i32 %n, 1
@@ -272,18 +270,7 @@ bcopy:
   store i64 %s2, ptr %pb2, align 4
   store i64 %s3, ptr %pb3, align 4
   %bmi = add i32 %marks, %k
-  %pbm = getelementptr i32, ptr %st, i32 %bmi
-  %bm = load i32, ptr %pbm
-  %bun = icmp eq i32 %bm, 0
-  br i1 %bun, label %blist, label %bnext
-blist:
-  store i32 1, ptr %pbm
-  %bc = load i32, ptr %pc
-  %bdi = add i32 %dirty, %bc
-  %pbd = getelementptr i32, ptr %st, i32 %bdi
-  store i32 %k, ptr %pbd
-  %bc1 = add i32 %bc, 1
-  store i32 %bc1, ptr %pc
+  call void @listed(ptr %st, i32 %bmi, i32 %k, i32 %dirty)
   br label %bnext
 bnext:
   %k1 = add i32 %k, 1
@@ -423,7 +410,8 @@ def _make() -> None:
     if not _made:
         from ladderworks.core.plc.native.jit import compile_ir
 
-        engine, address, _ir, _llvm = compile_ir([_GROW + _MOVE + _PUT + _AREAS], entry="grow")
+        engine, address, _ir, _llvm = compile_ir([_GROW + _LISTED + _MOVE + _PUT + _AREAS],
+                                               entry="grow")
         _made.extend((engine, _TYPE(address), _MOVE_TYPE(engine.get_function_address("move")),
                       _PUT_TYPE(engine.get_function_address("put")),
                       _AREAS_TYPE(engine.get_function_address("areas"))))
