@@ -151,15 +151,27 @@ def _select(f: FunctionText, test: str, first: str, second: str, kind: str = "i6
     return f.value(f"select i1 {test}, {kind} {first}, {kind} {second}")
 
 
-def _ton(b: Block, impl: FunctionImpl, params: Sequence[object],
-         inputs: list[str]) -> str | None:
+def _entered(b: Block, params: Sequence[object], inputs: list[str]
+             ) -> tuple[_Timer, str, str] | None:
+    """A TON/TOF/TP/TONR's timer and its IN now and at its last run (now kept for the next);
+    None when its parameters are not native."""
     if not _timer_params(b, params, 3):
         return None
     assert isinstance(params[0], Address)
-    t, f = _Timer(b, params[0]), b.f
-    signal = f.truth(inputs[0])
+    t = _Timer(b, params[0])
+    signal = b.f.truth(inputs[0])
     was = t.flag(IN)
     t.set_flag(IN, signal)
+    return t, signal, was
+
+
+def _ton(b: Block, impl: FunctionImpl, params: Sequence[object],
+         inputs: list[str]) -> str | None:
+    entered = _entered(b, params, inputs)
+    if entered is None:
+        return None
+    t, signal, was = entered
+    f = b.f
     starts = f.value(f"and i1 {signal}, {f.value(f'xor i1 {was}, true')}")
     t.restart(starts, params[1])
     pt, et = t.capped()
@@ -170,13 +182,11 @@ def _ton(b: Block, impl: FunctionImpl, params: Sequence[object],
 
 def _tof(b: Block, impl: FunctionImpl, params: Sequence[object],
          inputs: list[str]) -> str | None:
-    if not _timer_params(b, params, 3):
+    entered = _entered(b, params, inputs)
+    if entered is None:
         return None
-    assert isinstance(params[0], Address)
-    t, f = _Timer(b, params[0]), b.f
-    signal = f.truth(inputs[0])
-    was = t.flag(IN)
-    t.set_flag(IN, signal)
+    t, signal, was = entered
+    f = b.f
     off = f.value(f"xor i1 {signal}, true")
     falls = f.value(f"and i1 {off}, {was}")
     t.restart(falls, params[1])
@@ -195,13 +205,11 @@ def _tof(b: Block, impl: FunctionImpl, params: Sequence[object],
 
 def _tp(b: Block, impl: FunctionImpl, params: Sequence[object],
         inputs: list[str]) -> str | None:
-    if not _timer_params(b, params, 3):
+    entered = _entered(b, params, inputs)
+    if entered is None:
         return None
-    assert isinstance(params[0], Address)
-    t, f = _Timer(b, params[0]), b.f
-    signal = f.truth(inputs[0])
-    was = t.flag(IN)
-    t.set_flag(IN, signal)
+    t, signal, was = entered
+    f = b.f
     pulsing = t.flag(RU)
     rises = f.value(f"and i1 {signal}, {f.value(f'xor i1 {was}, true')}")
     starts = f.value(f"and i1 {f.value(f'xor i1 {pulsing}, true')}, {rises}")
@@ -216,13 +224,12 @@ def _tp(b: Block, impl: FunctionImpl, params: Sequence[object],
 
 def _tonr(b: Block, impl: FunctionImpl, params: Sequence[object],
           inputs: list[str]) -> str | None:
-    if not _timer_params(b, params, 3) or len(inputs) != 2:
+    entered = _entered(b, params, inputs) if len(inputs) == 2 else None
+    if entered is None:
         return None
-    assert isinstance(params[0], Address)
-    t, f = _Timer(b, params[0]), b.f
-    signal, reset = f.truth(inputs[0]), f.truth(inputs[1])
-    was = t.flag(IN)
-    t.set_flag(IN, signal)
+    t, signal, was = entered
+    f = b.f
+    reset = f.truth(inputs[1])
     pt = t.pt_of(params[1])
     t.put(0, pt)
     kept = t.get(4)
